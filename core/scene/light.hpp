@@ -1,0 +1,24 @@
+#pragma once
+// The one light of a scene.
+#include <glm/glm.hpp>
+
+namespace shadowlab {
+
+enum class LightType { directional, spot, point };
+
+const char* to_string(LightType type);
+
+struct Light {
+    LightType type = LightType::directional;
+    glm::dvec3 direction{-0.3, -1.0, -0.2};  // unit; the way the light travels (directional, spot)
+    glm::dvec3 position{0.0, 10.0, 0.0};     // spot and point lights
+    double cone_deg = 60.0;                  // spot: full apex angle of the cone
+
+    bool is_directional() const { return type == LightType::directional; }
+    // The light as a homogeneous point: (position, 1), or (-direction, 0) at infinity.
+    glm::dvec4 homogeneous() const {
+        return is_directional() ? glm::dvec4(-direction, 0.0) : glm::dvec4(position, 1.0);
+    }
+};
+
+}  // namespace shadowlab

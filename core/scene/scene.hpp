@@ -1,0 +1,23 @@
+#pragma once
+// A scene: one camera, one light, objects.
+#include <string>
+#include <vector>
+
+#include "geometry/aabb.hpp"
+#include "scene/camera.hpp"
+#include "scene/light.hpp"
+#include "scene/scene_object.hpp"
+
+namespace shadowlab {
+
+struct Scene {
+    std::string name;
+    std::string source_file;  // where it was loaded from (empty when built in code)
+    Camera camera;
+    Light light;
+    std::vector<SceneObject> objects;
+
+    Aabb bounds() const;  // union of the objects' world bounds
+};
+
+}  // namespace shadowlab

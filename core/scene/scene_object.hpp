@@ -1,0 +1,35 @@
+#pragma once
+// One object of a scene: a primitive or a mesh, placed by position, rotation and scale.
+#include <memory>
+#include <string>
+#include <glm/glm.hpp>
+
+#include "geometry/aabb.hpp"
+#include "scene/triangle_mesh.hpp"
+
+namespace shadowlab {
+
+enum class Shape { box, sphere, plane, cylinder, mesh };
+
+const char* to_string(Shape shape);
+
+struct SceneObject {
+    std::string name;
+    Shape shape = Shape::box;
+    glm::dvec3 position{0.0};
+    glm::dvec3 rotation_deg{0.0};  // applied about x, then y, then z
+    glm::dvec3 scale{1.0};
+    glm::dvec3 size{1.0};          // box: full extents; plane: x and z extents (y unused)
+    double radius = 0.5;           // sphere, cylinder
+    double height = 1.0;           // cylinder (along local y)
+    std::string mesh_file;         // mesh: path as written in the scene
+    std::shared_ptr<const TriangleMesh> mesh;
+    bool casts = true;
+    bool receives = true;
+
+    glm::dmat4 model_matrix() const;  // local -> world: T * Rz * Ry * Rx * S
+    Aabb local_bounds() const;        // a plane is flat: zero extent in y
+    Aabb world_bounds() const;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,28 @@
+#pragma once
+// An indexed triangle mesh in an object's local space.
+#include <array>
+#include <string>
+#include <vector>
+#include <glm/glm.hpp>
+
+#include "geometry/aabb.hpp"
+
+namespace shadowlab {
+
+struct TriangleMesh {
+    std::vector<glm::dvec3> vertices;
+    std::vector<std::array<int, 3>> triangles;
+
+    Aabb bounds() const {
+        Aabb box;
+        for (const glm::dvec3& v : vertices) box.extend(v);
+        return box;
+    }
+};
+
+// Loads OBJ, PLY, STL or glTF through Assimp, all meshes of the file merged.
+// Throws SceneError naming `json_path` when the file is missing, unreadable or has no triangles.
+TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file,
+                                const std::string& json_path);
+
+}  // namespace shadowlab
