@@ -1,0 +1,85 @@
+#include "inspect_command.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+#include "io/inspection_json.hpp"
+#include "math/matrix.hpp"
+#include "methods/method.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace shadowlab {
+namespace {
+
+std::string format_value(const TraceValue& value, const std::string& indent) {
+    if (const auto* m = std::get_if<glm::dmat4>(&value)) {
+        std::string out;
+        for (int r = 0; r < 4; ++r) {
+            const glm::dvec4 v = row(*m, r);
+            char line[160];
+            std::snprintf(line, sizeof line, "\n%s  [%13.6g %13.6g %13.6g %13.6g]", indent.c_str(), v.x, v.y, v.z, v.w);
+            out += line;
+        }
+        return out;
+    }
+    return " " + to_json(value).dump();
+}
+
+std::string describe(const NamedGeometry& g) {
+    return std::visit([](const auto& s) -> std::string {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, PointSet>) return std::to_string(s.points.size()) + " points";
+        else if constexpr (std::is_same_v<T, Aabb>)
+            return "box " + to_json(TraceValue(s.min)).dump() + " .. " + to_json(TraceValue(s.max)).dump();
+        else if constexpr (std::is_same_v<T, ConvexPolyhedron>)
+            return "convex polyhedron, " + std::to_string(s.vertices.size()) + " vertices, " +
+                   std::to_string(s.faces.size()) + " faces";
+        else return "frustum (8 corners)";
+    }, g.geometry);
+}
+
+void print_text(const std::string& scene_file, const Method& method, const Settings& settings,
+                const ShadowInputs& inputs, const ShadowSetup& setup, const Trace& trace) {
+    std::cout << "scene:    " << scene_file << "\n"
+              << "method:   " << method.name << " (" << method.title << ")\n";
+    std::cout << "settings:";
+    for (const auto& [key, value] : settings.values())
+        std::cout << " " << key << "=" << std::visit([](const auto& v) { return Json(v).dump(); }, value);
+    std::cout << (settings.values().empty() ? " none\n" : "\n");
+    std::cout << "inputs:   " << inputs.receivers.size() << " receiver boxes, " << inputs.casters.size()
+              << " caster boxes\n"
+              << "fallback: " << setup.fallback.value_or("none") << "\n\nsteps:\n";
+    int n = 0;
+    for (const Step& s : trace.steps()) {
+        std::cout << "  " << ++n << ". " << s.title << "  [" << s.id << ", " << to_string(s.space) << " space]\n"
+                  << "     " << s.explanation << "\n";
+        for (const NamedValue& v : s.values) std::cout << "     " << v.name << ":" << format_value(v.value, "     ") << "\n";
+        for (const NamedGeometry& g : s.geometry) std::cout << "     " << g.name << ": " << describe(g) << "\n";
+    }
+    for (size_t i = 0; i < setup.maps.size(); ++i)
+        std::cout << "\nmap " << i << " world_to_uvz (rows):" << format_value(setup.maps[i].world_to_uvz, "")
+                  << "\nmap " << i << " z_bias_scale: " << setup.maps[i].z_bias_scale << "\n";
+}
+
+}  // namespace
+
+void run_inspect(const InspectOptions& options) {
+    const Method* method = find_method(options.method);
+    if (!method) {
+        std::string known;
+        for (const Method& m : all_methods()) known += " " + m.name;
+        throw std::invalid_argument("unknown method '" + options.method + "' (known:" + known + ")");
+    }
+    const Settings settings = resolve_settings(method->name, method->settings, options.settings);
+    const Scene scene = load_scene(options.scene_file);
+    const ShadowInputs inputs = gather_inputs(scene);
+    Trace trace;
+    const ShadowSetup setup = method->compute(inputs, settings, &trace);
+    if (options.json)
+        std::cout << inspection_json(method->name, settings, inputs, setup, trace).dump(1) << "\n";
+    else
+        print_text(options.scene_file, *method, settings, inputs, setup, trace);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,75 @@
+// The intersection body with our own floating-point plane clipper. The extrusion of V toward the
+// light is itself an intersection of half-spaces: V's faces that turn away from the light, plus
+// one plane through each silhouette edge and the light. So B = S clipped by those planes.
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "geometry/intersection_body.hpp"
+
+namespace shadowlab {
+namespace {
+
+// Distances under this count as zero: relative to the scene's size and position.
+double clip_tolerance(const Aabb& s) {
+    return 1e-10 * (s.diagonal() + glm::length(s.center()));
+}
+
+ConvexPolyhedron clipped(ConvexPolyhedron poly, const std::vector<Plane>& planes, double tolerance) {
+    for (const Plane& plane : planes) {
+        poly = clip(poly, plane, tolerance);
+        if (poly.empty()) break;
+    }
+    return poly;
+}
+
+// The plane through edge a-b that contains the light (a point, or a direction when w = 0),
+// oriented so that `inner` lies inside. Nullopt when the edge points at the light.
+std::optional<Plane> silhouette_plane(const glm::dvec3& a, const glm::dvec3& b,
+                                      const glm::dvec4& light, const glm::dvec3& inner) {
+    const glm::dvec3 toward_light = light.w == 0.0 ? glm::dvec3(light) : glm::dvec3(light) - a;
+    const glm::dvec3 n = glm::cross(b - a, toward_light);
+    const double length = glm::length(n);
+    if (!(length > 1e-12 * glm::length(b - a) * glm::length(toward_light))) return std::nullopt;
+    Plane plane = Plane::through(a, n / length);
+    if (plane.signed_distance(inner) > 0.0) plane = Plane::through(a, -plane.normal);
+    return plane;
+}
+
+// Bounding planes of hull(V ∪ light): faces of V turned away from the light, and silhouette planes.
+std::vector<Plane> extrusion_planes(const ConvexPolyhedron& v, const glm::dvec4& light,
+                                    double tolerance) {
+    std::vector<bool> faces_light(v.faces.size());
+    for (size_t f = 0; f < v.faces.size(); ++f)
+        faces_light[f] = v.faces[f].plane.signed_distance(light) > tolerance;
+
+    std::vector<Plane> planes;
+    std::map<std::pair<int, int>, size_t> edge_face;  // directed edge -> face
+    for (size_t f = 0; f < v.faces.size(); ++f) {
+        if (!faces_light[f]) planes.push_back(v.faces[f].plane);
+        const auto& loop = v.faces[f].loop;
+        for (size_t k = 0; k < loop.size(); ++k) edge_face[{loop[k], loop[(k + 1) % loop.size()]}] = f;
+    }
+    const glm::dvec3 inner = v.centroid();
+    for (const auto& [edge, f] : edge_face) {
+        auto twin = edge_face.find({edge.second, edge.first});
+        if (twin == edge_face.end() || !faces_light[f] || faces_light[twin->second]) continue;
+        if (auto plane = silhouette_plane(v.vertices[edge.first], v.vertices[edge.second], light, inner))
+            planes.push_back(*plane);
+    }
+    return planes;
+}
+
+}  // namespace
+
+IntersectionBody intersection_body_float(const BodyInput& input) {
+    const double tolerance = clip_tolerance(input.scene_bounds);
+    const ConvexPolyhedron scene = ConvexPolyhedron::box(input.scene_bounds);
+    IntersectionBody out;
+    out.visible = clipped(scene, {input.frustum.planes.begin(), input.frustum.planes.end()}, tolerance);
+    if (out.visible.empty()) return {};
+    out.body = clipped(scene, extrusion_planes(out.visible, input.light, tolerance), tolerance);
+    return out;
+}
+
+}  // namespace shadowlab

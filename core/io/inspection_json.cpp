@@ -1,0 +1,82 @@
+#include "io/inspection_json.hpp"
+
+#include "math/matrix.hpp"
+
+namespace shadowlab {
+
+template <int N>
+static Json to_json(const glm::vec<N, double>& v) {
+    Json out = Json::array();
+    for (int i = 0; i < N; ++i) out.push_back(v[i]);
+    return out;
+}
+
+static Json points_json(const std::vector<glm::dvec3>& points) {
+    Json out = Json::array();
+    for (const glm::dvec3& p : points) out.push_back(to_json(p));
+    return out;
+}
+
+Json to_json(const glm::dmat4& m) {
+    return Json::array({to_json(row(m, 0)), to_json(row(m, 1)), to_json(row(m, 2)), to_json(row(m, 3))});
+}
+
+Json to_json(const TraceValue& value) {
+    return std::visit([](const auto& v) -> Json {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::string>) return v;
+        else return to_json(v);
+    }, value);
+}
+
+static Json polyhedron_json(const ConvexPolyhedron& poly) {
+    Json faces = Json::array();
+    for (const PolyFace& f : poly.faces) faces.push_back(f.loop);
+    return {{"kind", "polyhedron"}, {"vertices", points_json(poly.vertices)}, {"faces", faces}};
+}
+
+Json to_json(const NamedGeometry& named) {
+    Json out = std::visit([](const auto& g) -> Json {
+        using T = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<T, PointSet>) return {{"kind", "points"}, {"points", points_json(g.points)}};
+        else if constexpr (std::is_same_v<T, Aabb>) return {{"kind", "aabb"}, {"min", to_json(g.min)}, {"max", to_json(g.max)}};
+        else if constexpr (std::is_same_v<T, ConvexPolyhedron>) return polyhedron_json(g);
+        else return {{"kind", "frustum"}, {"corners", points_json({g.corners.begin(), g.corners.end()})}};
+    }, named.geometry);
+    out["name"] = named.name;
+    return out;
+}
+
+Json to_json(const Step& step) {
+    Json values = Json::object();
+    for (const NamedValue& v : step.values) values[v.name] = to_json(v.value);
+    Json geometry = Json::array();
+    for (const NamedGeometry& g : step.geometry) geometry.push_back(to_json(g));
+    return {{"id", step.id}, {"title", step.title}, {"explanation", step.explanation},
+            {"space", to_string(step.space)}, {"values", values}, {"geometry", geometry}};
+}
+
+Json to_json(const ShadowMap& map) {
+    return {{"world_to_uvz", to_json(map.world_to_uvz)}, {"viewport", to_json(map.viewport)},
+            {"z_bias_scale", map.z_bias_scale}};
+}
+
+Json inspection_json(const std::string& method, const Settings& settings, const ShadowInputs& inputs,
+                     const ShadowSetup& setup, const Trace& trace) {
+    Json settings_json = Json::object();
+    for (const auto& [key, value] : settings.values())
+        settings_json[key] = std::visit([](const auto& v) { return Json(v); }, value);
+    Json maps = Json::array();
+    for (const ShadowMap& m : setup.maps) maps.push_back(to_json(m));
+    Json steps = Json::array();
+    for (const Step& s : trace.steps()) steps.push_back(to_json(s));
+    return {{"method", method},
+            {"settings", settings_json},
+            {"fallback", setup.fallback ? Json(*setup.fallback) : Json(nullptr)},
+            {"inputs", {{"receivers", points_json(inputs.receiver_points())},
+                        {"casters", points_json(inputs.caster_points())}}},
+            {"maps", maps},
+            {"steps", steps}};
+}
+
+}  // namespace shadowlab

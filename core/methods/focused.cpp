@@ -1,0 +1,57 @@
+// Focused shadow map: the orthographic light projection fit, in light space, to the intersection
+// body B = hull(V ∪ light) ∩ S, V = view frustum ∩ S (Wimmer and Scherzer; Ogre's
+// FocusedShadowCameraSetup). Only what can shadow the visible part of the scene gets texels.
+#include "methods/focused.hpp"
+
+#include "geometry/intersection_body.hpp"
+#include "methods/map_fit.hpp"
+#include "methods/uniform.hpp"
+
+namespace shadowlab {
+
+const SettingSpec& body_kernel_setting() {
+    static const SettingSpec spec{"kernel",
+                                  "intersection-body geometry: our float clipper (fast), CGAL epick, or CGAL "
+                                  "epeck (exact, slowest)",
+                                  "float", 0, 0, {"float", "epick", "epeck"}};
+    return spec;
+}
+
+IntersectionBody focus_body(const ShadowInputs& in, const Settings& settings, Trace* trace) {
+    const BodyKernel kernel = *body_kernel_from_string(settings.choice("kernel"));
+    IntersectionBody body = intersection_body({in.frustum, in.scene_bounds, in.light.homogeneous()}, kernel);
+    record(trace, [&](Trace& t) {
+        t.add("frustum", "View frustum and scene bounds", "the camera's frustum F and the scene's bounds S",
+              Space::world)
+            .shape("F", in.frustum).shape("S", in.scene_bounds)
+            .shape("receivers", PointSet{in.receiver_points()})
+            .shape("casters", PointSet{in.caster_points()});
+        t.add("visible", "Visible region V", "V = F ∩ S", Space::world)
+            .value("volume", body.visible.volume())
+            .shape("V", body.visible);
+        t.add("body", "Intersection body B", "B = hull(V ∪ light) ∩ S: every point that can shadow V",
+              Space::world)
+            .value("kernel", std::string(to_string(kernel)))
+            .value("volume", body.body.volume())
+            .value("vertices", double(body.body.vertices.size()))
+            .value("faces", double(body.body.faces.size()))
+            .shape("B", body.body);
+    });
+    return body;
+}
+
+ShadowSetup compute_focused(const ShadowInputs& in, const Settings& settings, Trace* trace) {
+    ShadowSetup setup;
+    const IntersectionBody body = focus_body(in, settings, trace);
+    if (body.body.empty()) {
+        add_fallback(setup, "empty intersection body: the view frustum does not meet the scene; uniform map used");
+        fit_uniform(in, setup, trace);
+        return setup;
+    }
+    const glm::dvec3 view_dir = in.camera.view_direction();
+    fit_map(in, {&body.body.vertices, view_dir, body.body.centroid()}, setup, trace);
+    record_output(setup, body.body.vertices, trace);
+    return setup;
+}
+
+}  // namespace shadowlab

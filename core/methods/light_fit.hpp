@@ -1,0 +1,45 @@
+#pragma once
+// Helpers shared by the methods: light-space bases and fitting a map to points.
+#include <optional>
+#include <string>
+#include <vector>
+#include <glm/glm.hpp>
+
+#include "geometry/aabb.hpp"
+#include "methods/method.hpp"
+#include "scene/light.hpp"
+
+namespace shadowlab {
+
+struct LightBasis {
+    glm::dmat4 world_to_light{1.0};  // rotation (and translation to `origin`): light travels along +z
+    bool up_was_degenerate = false;  // the up hint was parallel to the light: another axis was used
+};
+
+// Light space for a direction: z = direction, y = `up_hint` made perpendicular to it, x = y × z.
+LightBasis light_basis(const glm::dvec3& direction, const glm::dvec3& up_hint,
+                       const glm::dvec3& origin = glm::dvec3(0.0));
+
+// Points transformed by an affine matrix.
+std::vector<glm::dvec3> transformed(const std::vector<glm::dvec3>& points, const glm::dmat4& m);
+Aabb bounds_of(const std::vector<glm::dvec3>& points);
+
+// The light-space box onto the unit cube; depth = (z - min.z) / (max.z - min.z).
+glm::dmat4 box_to_unit_cube(const Aabb& light_box);
+
+// An orthographic map fit to `points` (world) in the given light space.
+ShadowMap orthographic_map(const glm::dmat4& world_to_light, const Aabb& light_box);
+
+// A perspective map from a spot or point light that covers `points` (world), at most
+// `max_half_angle_deg` off its axis. Named fallbacks: points behind the light, or wider than the
+// allowed cone (the map then covers only the cone).
+struct PerspectiveFit {
+    ShadowMap map;
+    glm::dmat4 world_to_light{1.0};  // light view: looks down +z here, like the directional case
+    Aabb light_box;                  // tangent-space x, y and distance z of the covered points
+    std::optional<std::string> fallback;
+};
+PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
+                               const std::vector<glm::dvec3>& points, double max_half_angle_deg);
+
+}  // namespace shadowlab

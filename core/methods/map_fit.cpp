@@ -1,0 +1,78 @@
+#include "methods/map_fit.hpp"
+
+#include <cmath>
+
+#include "methods/light_fit.hpp"
+
+namespace shadowlab {
+
+void add_fallback(ShadowSetup& setup, const std::string& what) {
+    setup.fallback = setup.fallback ? *setup.fallback + "; " + what : what;
+}
+
+static void fit_orthographic(const ShadowInputs& in, const MapFitRequest& req, ShadowSetup& setup, Trace* trace) {
+    const LightBasis basis = light_basis(in.light.direction, req.up_hint);
+    const std::vector<glm::dvec3> light_points = transformed(*req.points, basis.world_to_light);
+    const Aabb light_box = bounds_of(light_points);
+    setup.maps.push_back(orthographic_map(basis.world_to_light, light_box));
+    record(trace, [&](Trace& t) {
+        t.add("light-space", "Light space", "rows x, y, z: z = light direction, y = up hint made perpendicular",
+              Space::light)
+            .value("world_to_light", basis.world_to_light)
+            .value("up_hint", req.up_hint)
+            .value("up_hint_parallel_to_light", basis.up_was_degenerate ? 1.0 : 0.0)
+            .shape("points", PointSet{light_points});
+        t.add("light-box", "Light-space fit", "AABB of the points in light space: the orthographic projection",
+              Space::light)
+            .value("min", light_box.min).value("max", light_box.max)
+            .shape("fit", light_box);
+        t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min): the light box onto [0,1]^3", Space::unit)
+            .value("light_to_unit", box_to_unit_cube(light_box));
+    });
+}
+
+static void fit_perspective(const ShadowInputs& in, const MapFitRequest& req, ShadowSetup& setup, Trace* trace) {
+    const bool spot = in.light.type == LightType::spot;
+    glm::dvec3 axis = spot ? in.light.direction : req.aim - in.light.position;
+    if (!(glm::length(axis) > 0.0)) axis = glm::dvec3(0, -1, 0);  // aim point at the light itself
+    const double max_half_angle = spot ? in.light.cone_deg / 2 : 80.0;
+    const PerspectiveFit fit = perspective_map(in.light, glm::normalize(axis), *req.points, max_half_angle);
+    setup.maps.push_back(fit.map);
+    if (fit.fallback) add_fallback(setup, *fit.fallback);
+    record(trace, [&](Trace& t) {
+        t.add("light-space", "Light view", "origin at the light, z along its axis", Space::light)
+            .value("world_to_light", fit.world_to_light)
+            .value("max_half_angle_deg", max_half_angle)
+            .shape("points", PointSet{transformed(*req.points, fit.world_to_light)});
+        t.add("light-frustum", "Light frustum fit",
+              "tangent bounds (x/z, y/z) and distance range of the points, clamped to the cone", Space::light)
+            .value("tan_min", glm::dvec2(fit.light_box.min)).value("tan_max", glm::dvec2(fit.light_box.max))
+            .value("near", fit.light_box.min.z).value("far", fit.light_box.max.z);
+    });
+}
+
+void fit_map(const ShadowInputs& inputs, const MapFitRequest& request, ShadowSetup& setup, Trace* trace) {
+    if (inputs.light.is_directional())
+        fit_orthographic(inputs, request, setup, trace);
+    else
+        fit_perspective(inputs, request, setup, trace);
+}
+
+void record_output(const ShadowSetup& setup, const std::vector<glm::dvec3>& covered, Trace* trace) {
+    record(trace, [&](Trace& t) {
+        for (size_t i = 0; i < setup.maps.size(); ++i) {
+            const ShadowMap& map = setup.maps[i];
+            PointSet unit_points;
+            for (const glm::dvec3& p : covered) unit_points.points.push_back(world_to_uvz(map, p));
+            const std::string suffix = setup.maps.size() > 1 ? "-" + std::to_string(i) : "";
+            t.add("output" + suffix, "Map transform", "world (x,y,z,1) -> (u,v,d,w); u,v,d in [0,1] after / w",
+                  Space::unit)
+                .value("world_to_uvz", map.world_to_uvz)
+                .value("z_bias_scale", map.z_bias_scale)
+                .shape("unit_cube", Aabb{glm::dvec3(0.0), glm::dvec3(1.0)})
+                .shape("covered_points", std::move(unit_points));
+        }
+    });
+}
+
+}  // namespace shadowlab

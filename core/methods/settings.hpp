@@ -1,0 +1,38 @@
+#pragma once
+// A method's settings: each declared with its range or choices and a default, so the CLI, the GUI
+// and the tests all read the same list.
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace shadowlab {
+
+struct SettingSpec {
+    std::string name;
+    std::string description;
+    std::string default_value;
+    double min = 0.0, max = 0.0;       // numbers: the closed range
+    std::vector<std::string> choices;  // choices: the allowed words (empty for a number)
+
+    bool is_choice() const { return !choices.empty(); }
+};
+
+class Settings {
+public:
+    double number(const std::string& name) const;
+    const std::string& choice(const std::string& name) const;
+    const std::map<std::string, std::variant<double, std::string>>& values() const { return values_; }
+    void set(const std::string& name, std::variant<double, std::string> value) { values_[name] = std::move(value); }
+
+private:
+    std::map<std::string, std::variant<double, std::string>> values_;
+};
+
+// Defaults overridden by `overrides` (key -> text). Throws std::invalid_argument naming the method,
+// the key and what is allowed, for an unknown key, a word not among the choices, a non-number or a
+// number out of range.
+Settings resolve_settings(const std::string& method, const std::vector<SettingSpec>& specs,
+                          const std::map<std::string, std::string>& overrides);
+
+}  // namespace shadowlab

@@ -1,0 +1,36 @@
+#pragma once
+// What every method starts from: camera, light, the scene's bounds, and the boxes of the objects
+// that matter for this view (visible receivers, casters whose shadow can reach the view).
+#include <vector>
+
+#include "geometry/aabb.hpp"
+#include "geometry/frustum.hpp"
+#include "scene/scene.hpp"
+
+namespace shadowlab {
+
+// An object's world box and flags: computed once per scene, reused for every view.
+struct ObjectBox {
+    Aabb box;
+    bool casts = true;
+    bool receives = true;
+};
+
+std::vector<ObjectBox> object_boxes(const Scene& scene);
+
+struct ShadowInputs {
+    Camera camera;
+    Light light;
+    Frustum frustum;
+    Aabb scene_bounds;            // all objects, padded so that it is never flat
+    std::vector<Aabb> receivers;  // `receives` and the box meets the view frustum
+    std::vector<Aabb> casters;    // `casts` and the box's shadow can reach the view frustum
+
+    std::vector<glm::dvec3> receiver_points() const;  // 8 corners per box
+    std::vector<glm::dvec3> caster_points() const;
+};
+
+ShadowInputs gather_inputs(const Camera& camera, const Light& light, const std::vector<ObjectBox>& objects);
+ShadowInputs gather_inputs(const Scene& scene);
+
+}  // namespace shadowlab

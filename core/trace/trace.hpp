@@ -1,0 +1,78 @@
+#pragma once
+// A step trace: what a method did, step by step, in the space where each step happens.
+// Methods record through `record(trace, ...)`: with no trace asked for, the lambda is never
+// called, so nothing is computed, recorded or allocated for it.
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+#include <glm/glm.hpp>
+
+#include "geometry/aabb.hpp"
+#include "geometry/convex_polyhedron.hpp"
+#include "geometry/frustum.hpp"
+
+namespace shadowlab {
+
+enum class Space { world, view, light, ppls, unit };
+const char* to_string(Space space);
+
+struct PointSet {
+    std::vector<glm::dvec3> points;
+};
+
+using TraceValue = std::variant<double, glm::dvec2, glm::dvec3, glm::dvec4, glm::dmat4, std::string>;
+using TraceGeometry = std::variant<PointSet, Aabb, ConvexPolyhedron, Frustum>;
+
+struct NamedValue {
+    std::string name;
+    TraceValue value;
+};
+
+struct NamedGeometry {
+    std::string name;
+    TraceGeometry geometry;
+};
+
+struct Step {
+    std::string id;           // stable, e.g. "body" or "xpsm.5"
+    std::string title;        // as the paper names it, e.g. "maxLengthP"
+    std::string explanation;  // one line: the formula this step applies
+    Space space = Space::world;
+    std::vector<NamedValue> values;
+    std::vector<NamedGeometry> geometry;
+
+    Step& value(std::string name, TraceValue v) {
+        values.push_back({std::move(name), std::move(v)});
+        return *this;
+    }
+    Step& shape(std::string name, TraceGeometry g) {
+        geometry.push_back({std::move(name), std::move(g)});
+        return *this;
+    }
+};
+
+class Trace {
+public:
+    Step& add(std::string id, std::string title, std::string explanation, Space space) {
+        steps_.push_back({std::move(id), std::move(title), std::move(explanation), space, {}, {}});
+        return steps_.back();
+    }
+    const std::vector<Step>& steps() const { return steps_; }
+    const Step* find(const std::string& id) const {
+        for (const Step& s : steps_)
+            if (s.id == id) return &s;
+        return nullptr;
+    }
+
+private:
+    std::vector<Step> steps_;
+};
+
+// Calls fill(*trace) only when a trace was asked for.
+template <class Fill>
+inline void record(Trace* trace, Fill&& fill) {
+    if (trace) fill(*trace);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,153 @@
+// Invariants every method must keep on every shipped scene.
+#include <gtest/gtest.h>
+
+#include "geometry/intersection_body.hpp"
+#include "methods/method.hpp"
+#include "scene/scene_loader.hpp"
+#include "test_support.hpp"
+
+using namespace shadowlab;
+using namespace shadowlab::testing;
+
+namespace {
+
+ShadowSetup run(const Method& method, const ShadowInputs& inputs, std::map<std::string, std::string> set = {},
+                Trace* trace = nullptr) {
+    return method.compute(inputs, resolve_settings(method.name, method.settings, set), trace);
+}
+
+// Receiver corners inside the view frustum must land in the unit cube.
+void expect_receivers_in_unit_cube(const ShadowInputs& in, const ShadowSetup& setup, const std::string& what) {
+    ASSERT_EQ(setup.maps.size(), 1u) << what;
+    const double tol = 1e-7 * in.scene_bounds.diagonal();
+    int checked = 0;
+    for (const glm::dvec3& p : in.receiver_points()) {
+        if (!in.frustum.contains(p, -tol)) continue;
+        ++checked;
+        const glm::dvec3 uvz = world_to_uvz(setup.maps[0], p);
+        ASSERT_TRUE(in_unit_cube(uvz, 1e-6)) << what << ": receiver point maps to (" << uvz.x << ", " << uvz.y
+                                             << ", " << uvz.z << ")";
+    }
+    (void)checked;
+}
+
+}  // namespace
+
+class MethodOnScene : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(MethodOnScene, VisibleReceiversMapIntoTheUnitCube) {
+    const auto& [method_name, file] = GetParam();
+    const Scene scene = load_scene(file);
+    const ShadowInputs in = gather_inputs(scene);
+    const ShadowSetup setup = run(*find_method(method_name), in);
+    ASSERT_TRUE(finite(setup.maps.at(0).world_to_uvz));
+    if (setup.fallback) EXPECT_TRUE(is_named_fallback(*setup.fallback)) << *setup.fallback;
+    if (in.light.is_directional()) expect_receivers_in_unit_cube(in, setup, method_name + " on " + file);
+}
+
+TEST_P(MethodOnScene, DepthGrowsAlongEachLightRay) {
+    const auto& [method_name, file] = GetParam();
+    const Scene scene = load_scene(file);
+    const ShadowInputs in = gather_inputs(scene);
+    const ShadowSetup setup = run(*find_method(method_name), in);
+    const double step = 1e-3 * in.scene_bounds.diagonal();
+    for (const glm::dvec3& p : in.receiver_points()) {
+        const glm::dvec3 ray = in.light.is_directional() ? in.light.direction : glm::normalize(p - in.light.position);
+        const glm::dvec3 a = world_to_uvz(setup.maps[0], p), b = world_to_uvz(setup.maps[0], p + step * ray);
+        ASSERT_GT(b.z, a.z) << method_name << " on " << file;
+        EXPECT_NEAR(a.x, b.x, 1e-9 + 1e-9 * std::abs(a.x));
+        EXPECT_NEAR(a.y, b.y, 1e-9 + 1e-9 * std::abs(a.y));
+    }
+}
+
+TEST_P(MethodOnScene, TraceIsRecordedOnlyWhenAskedAndMatchesTheUntracedResult) {
+    const auto& [method_name, file] = GetParam();
+    const ShadowInputs in = gather_inputs(load_scene(file));
+    Trace trace;
+    const ShadowSetup traced = run(*find_method(method_name), in, {}, &trace);
+    const ShadowSetup plain = run(*find_method(method_name), in);
+    EXPECT_GE(trace.steps().size(), 3u);
+    ASSERT_NE(trace.find("output"), nullptr);
+    EXPECT_EQ(traced.maps[0].world_to_uvz, plain.maps[0].world_to_uvz);
+}
+
+static std::vector<std::tuple<std::string, std::string>> all_pairs() {
+    std::vector<std::tuple<std::string, std::string>> pairs;
+    for (const Method& m : all_methods())
+        for (const std::string& f : shipped_scenes()) pairs.emplace_back(m.name, f);
+    return pairs;
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedScenes, MethodOnScene, ::testing::ValuesIn(all_pairs()),
+                         [](const auto& info) {
+                             std::string name = std::get<0>(info.param) + "_" +
+                                                std::filesystem::path(std::get<1>(info.param)).stem().string();
+                             for (char& c : name) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
+
+class BodyOnScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BodyOnScene, ThreeKernelsAgreeAndBodyContainsTheVisibleRegion) {
+    const ShadowInputs in = gather_inputs(load_scene(GetParam()));
+    const BodyInput input{in.frustum, in.scene_bounds, in.light.homogeneous()};
+    const IntersectionBody exact = intersection_body(input, BodyKernel::epeck);
+    const IntersectionBody fast = intersection_body(input, BodyKernel::float_clipper);
+    const IntersectionBody inexact = intersection_body(input, BodyKernel::epick);
+    ASSERT_FALSE(exact.body.empty());
+    const double volume = exact.body.volume();
+    EXPECT_NEAR(fast.body.volume(), volume, 1e-4 * volume);
+    EXPECT_NEAR(inexact.body.volume(), volume, 1e-4 * volume);
+    EXPECT_NEAR(fast.visible.volume(), exact.visible.volume(), 1e-4 * exact.visible.volume());
+
+    const double tol = 1e-9 * in.scene_bounds.diagonal();
+    for (const IntersectionBody* b : {&exact, &fast, &inexact}) {
+        EXPECT_TRUE(is_closed(b->body));
+        EXPECT_TRUE(is_convex(b->body, tol));
+        for (const glm::dvec3& v : fast.visible.vertices)  // V ⊂ B
+            for (const PolyFace& f : b->body.faces) ASSERT_LE(f.plane.signed_distance(v), tol);
+        EXPECT_TRUE(in.scene_bounds.contains(b->body.bounds().min, tol));  // B ⊂ S
+        EXPECT_TRUE(in.scene_bounds.contains(b->body.bounds().max, tol));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedScenes, BodyOnScene, ::testing::ValuesIn(shipped_scenes()),
+                         [](const auto& info) { return std::filesystem::path(info.param).stem().string(); });
+
+TEST(Focused, EmptyBodyIsANamedFallbackNotANaN) {
+    Scene scene = random_town(20, 100.0, 1);
+    scene.camera.position = {0, 500, 0};  // far above the scene, looking up: nothing visible
+    scene.camera.target = {0, 600, 0};
+    scene.camera.up = {0, 0, 1};
+    const ShadowInputs in = gather_inputs(scene);
+    const ShadowSetup setup = run(*find_method("focused"), in);
+    ASSERT_TRUE(setup.fallback.has_value());
+    EXPECT_NE(setup.fallback->find("empty intersection body"), std::string::npos);
+    EXPECT_TRUE(finite(setup.maps.at(0).world_to_uvz));
+}
+
+TEST(Focused, IsTighterThanUniformWhenTheViewSeesPartOfTheScene) {
+    Scene scene = random_town(200, 400.0, 3);
+    scene.camera.position = {0, 2, 150};
+    scene.camera.target = {0, 2, 140};
+    scene.camera.far = 60;
+    const ShadowInputs in = gather_inputs(scene);
+    const glm::dmat4 u = run(*find_method("uniform"), in).maps[0].world_to_uvz;
+    const glm::dmat4 f = run(*find_method("focused"), in).maps[0].world_to_uvz;
+    // Texels per world unit: the focused map's scale in x and y is larger.
+    const double uniform_scale = glm::length(glm::dvec3(u[0][0], u[1][0], u[2][0])) * glm::length(glm::dvec3(u[0][1], u[1][1], u[2][1]));
+    const double focused_scale = glm::length(glm::dvec3(f[0][0], f[1][0], f[2][0])) * glm::length(glm::dvec3(f[0][1], f[1][1], f[2][1]));
+    EXPECT_GT(focused_scale, 4.0 * uniform_scale);
+}
+
+TEST(Settings, UnknownKeyAndBadValuesAreNamed) {
+    const Method& focused = *find_method("focused");
+    EXPECT_THROW(resolve_settings("focused", focused.settings, {{"kernel", "exactish"}}), std::invalid_argument);
+    try {
+        resolve_settings("focused", focused.settings, {{"colour", "red"}});
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("colour"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("kernel"), std::string::npos);
+    }
+}
