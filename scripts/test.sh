@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Builds everything and runs every test (under Xvfb, for the tests that need a display).
+set -euo pipefail
+cd "$(dirname "$(readlink -f "$0")")/.."
+scripts/build.sh
+xvfb-run -a ctest --test-dir build --output-on-failure -j2

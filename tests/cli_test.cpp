@@ -1,0 +1,147 @@
+// The command line as a user runs it: exit codes, one-line errors naming file and field, and the
+// JSON object of `shadowlab inspect --json`.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <nlohmann/json.hpp>
+
+#include "test_support.hpp"
+
+using shadowlab::testing::source_path;
+
+namespace {
+
+struct CliResult {
+    int exit_code;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& file) {
+    std::ifstream in(file);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+CliResult run_cli(const std::string& args) {
+    const std::string err_file = ::testing::TempDir() + "shadowlab_cli_stderr.txt";
+    const std::string command = std::string(SHADOWLAB_CLI) + " " + args + " 2>" + err_file;
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buffer;
+    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    return {WEXITSTATUS(status), out, slurp(err_file)};
+}
+
+std::map<std::string, std::string> expected_bad_scenes() {
+    std::map<std::string, std::string> expected;
+    std::istringstream lines(slurp(source_path("tests/data/bad/EXPECTED.tsv")));
+    for (std::string line; std::getline(lines, line);) {
+        const auto tab = line.find('\t');
+        if (tab != std::string::npos && line[0] != '#') expected[line.substr(0, tab)] = line.substr(tab + 1);
+    }
+    return expected;
+}
+
+// Each face's vertices lie on one plane that has every vertex on its inner side, and every
+// directed edge has its twin: the polyhedron is closed and convex.
+void expect_closed_convex(const nlohmann::json& poly) {
+    std::vector<glm::dvec3> v;
+    for (const auto& p : poly["vertices"]) v.push_back({p[0], p[1], p[2]});
+    std::map<std::pair<int, int>, int> edges;
+    double size = 0;
+    for (const auto& p : v) size = std::max(size, glm::length(p));
+    for (const auto& face : poly["faces"]) {
+        std::vector<int> loop = face.get<std::vector<int>>();
+        ASSERT_GE(loop.size(), 3u);
+        glm::dvec3 normal{0.0};  // Newell's method
+        for (size_t i = 0; i < loop.size(); ++i) {
+            const glm::dvec3 &a = v[loop[i]], &b = v[loop[(i + 1) % loop.size()]];
+            normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+            ++edges[{loop[i], loop[(i + 1) % loop.size()]}];
+        }
+        normal = glm::normalize(normal);
+        for (const auto& p : v) EXPECT_LE(glm::dot(normal, p - v[loop[0]]), 1e-7 * size);
+    }
+    for (const auto& [edge, count] : edges) {
+        EXPECT_EQ(count, 1);
+        EXPECT_EQ(edges.count({edge.second, edge.first}), 1u);
+    }
+}
+
+}  // namespace
+
+TEST(Cli, EachBadSceneGivesItsMessageAndANonZeroExit) {
+    const auto expected = expected_bad_scenes();
+    ASSERT_GE(expected.size(), 10u);
+    for (const auto& [file, message] : expected) {
+        const CliResult r = run_cli("inspect " + source_path("tests/data/bad/" + file));
+        EXPECT_NE(r.exit_code, 0) << file;
+        EXPECT_NE(r.err.find(file), std::string::npos) << file << ": " << r.err;
+        EXPECT_NE(r.err.find(message), std::string::npos) << file << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+        EXPECT_TRUE(r.out.empty()) << file;
+    }
+}
+
+TEST(Cli, UnknownMethodAndBadSettingAreRejected) {
+    const std::string scene = source_path("data/scenes/default.json");
+    CliResult r = run_cli("inspect " + scene + " --method nonesuch");
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("unknown method 'nonesuch'"), std::string::npos) << r.err;
+    r = run_cli("inspect " + scene + " --method focused --set kernel=fast");
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("kernel"), std::string::npos) << r.err;
+    r = run_cli("inspect " + scene + " --set nokey");
+    EXPECT_NE(r.exit_code, 0);
+}
+
+TEST(Cli, FocusedJsonHasTheDocumentedShapeAndAClosedConvexBody) {
+    const CliResult r = run_cli("inspect " + source_path("data/scenes/default.json") + " --method focused --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["method"], "focused");
+    EXPECT_EQ(j["settings"]["kernel"], "float");
+    EXPECT_TRUE(j["fallback"].is_null());
+    EXPECT_GT(j["inputs"]["receivers"].size(), 8u);
+    EXPECT_GT(j["inputs"]["casters"].size(), 8u);
+    ASSERT_EQ(j["maps"].size(), 1u);
+    EXPECT_EQ(j["maps"][0]["world_to_uvz"].size(), 4u);
+    EXPECT_EQ(j["maps"][0]["viewport"], nlohmann::json({0.0, 0.0, 1.0, 1.0}));
+    EXPECT_GT(j["maps"][0]["z_bias_scale"].get<double>(), 0.0);
+    const nlohmann::json* body = nullptr;
+    for (const auto& step : j["steps"])
+        if (step["id"] == "body")
+            for (const auto& g : step["geometry"])
+                if (g["kind"] == "polyhedron") body = &g;
+    ASSERT_NE(body, nullptr);
+    expect_closed_convex(*body);
+}
+
+TEST(Cli, EveryKernelGivesTheSameBodyVolume) {
+    std::vector<double> volumes;
+    for (const char* kernel : {"float", "epick", "epeck"}) {
+        const CliResult r = run_cli("inspect " + source_path("data/scenes/default.json") +
+                                    " --method focused --json --set kernel=" + kernel);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const nlohmann::json j = nlohmann::json::parse(r.out);
+        for (const auto& step : j["steps"])
+            if (step["id"] == "body") volumes.push_back(step["values"]["volume"]);
+    }
+    ASSERT_EQ(volumes.size(), 3u);
+    EXPECT_NEAR(volumes[0], volumes[2], 1e-4 * volumes[2]);
+    EXPECT_NEAR(volumes[1], volumes[2], 1e-4 * volumes[2]);
+}
+
+TEST(Cli, TextInspectionNamesTheStepsAndTheFallback) {
+    const CliResult r = run_cli("inspect " + source_path("data/scenes/default.json") + " --method uniform");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("fallback: none"), std::string::npos);
+    EXPECT_NE(r.out.find("Scene bounds"), std::string::npos);
+    EXPECT_NE(r.out.find("world_to_uvz"), std::string::npos);
+}
