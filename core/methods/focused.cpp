@@ -4,6 +4,7 @@
 #include "methods/focused.hpp"
 
 #include "geometry/intersection_body.hpp"
+#include "methods/fallbacks.hpp"
 #include "methods/map_fit.hpp"
 #include "methods/uniform.hpp"
 
@@ -40,18 +41,25 @@ IntersectionBody focus_body(const ShadowInputs& in, const Settings& settings, Tr
     return body;
 }
 
+std::optional<IntersectionBody> body_or_uniform(const ShadowInputs& in, const Settings& settings,
+                                                ShadowSetup& setup, Trace* trace) {
+    IntersectionBody body = focus_body(in, settings, trace);
+    if (!body.body.empty()) return body;
+    add_fallback(setup, fallback::named(fallback::empty_body, "the view frustum does not meet the scene; uniform map used"));
+    fit_uniform(in, setup, trace);
+    return std::nullopt;
+}
+
 ShadowSetup compute_focused(const ShadowInputs& in, const Settings& settings, Trace* trace) {
     ShadowSetup setup;
-    const IntersectionBody body = focus_body(in, settings, trace);
-    if (body.body.empty()) {
-        add_fallback(setup, "empty intersection body: the view frustum does not meet the scene; uniform map used");
-        fit_uniform(in, setup, trace);
-        return setup;
-    }
-    const glm::dvec3 view_dir = in.camera.view_direction();
-    fit_map(in, {&body.body.vertices, view_dir, body.body.centroid()}, setup, trace);
-    record_output(setup, body.body.vertices, trace);
+    if (const auto body = body_or_uniform(in, settings, setup, trace)) fit_focused(in, *body, setup, trace);
     return setup;
+}
+
+void fit_focused(const ShadowInputs& in, const IntersectionBody& body, ShadowSetup& setup, Trace* trace) {
+    // y along the view direction: the frustum's axis of symmetry lies along the map's v axis.
+    fit_map(in, {&body.body.vertices, in.camera.view_direction(), body.body.centroid()}, setup, trace);
+    record_output(setup, body.body.vertices, trace);
 }
 
 }  // namespace shadowlab

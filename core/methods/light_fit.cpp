@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "math/matrix.hpp"
+#include "methods/fallbacks.hpp"
 
 namespace shadowlab {
 
@@ -75,10 +76,10 @@ PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
     }
     if (fit.light_box.empty()) fit.light_box = {{-max_tan, -max_tan, min_near}, {max_tan, max_tan, 2 * min_near}};
     if (behind > 0)
-        fit.fallback = std::to_string(behind) + " points behind the light left out: one perspective map "
-                       "cannot cover them (an omnidirectional map would)";
+        fit.fallback = fallback::named(fallback::behind_light, std::to_string(behind) +
+                                       " left out: one perspective map cannot cover them (an omnidirectional map would)");
     else if (outside_cone > 0)
-        fit.fallback = std::to_string(outside_cone) + " points outside the light's cone left out";
+        fit.fallback = fallback::named(fallback::outside_cone, std::to_string(outside_cone) + " clamped to the cone");
 
     const Aabb& b = fit.light_box;
     const glm::dvec3 e = safe_extent(b);

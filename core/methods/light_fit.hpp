@@ -1,5 +1,6 @@
 #pragma once
 // Helpers shared by the methods: light-space bases and fitting a map to points.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,12 @@ struct LightBasis {
 // Light space for a direction: z = direction, y = `up_hint` made perpendicular to it, x = y × z.
 LightBasis light_basis(const glm::dvec3& direction, const glm::dvec3& up_hint,
                        const glm::dvec3& origin = glm::dvec3(0.0));
+
+// An up hint that does not depend on the camera (world +y, or +x for a vertical light), so that a
+// map built on it stays still as the camera moves.
+inline glm::dvec3 stable_up_hint(const glm::dvec3& direction) {
+    return std::abs(direction.y) < 0.99 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+}
 
 // Points transformed by an affine matrix.
 std::vector<glm::dvec3> transformed(const std::vector<glm::dvec3>& points, const glm::dmat4& m);

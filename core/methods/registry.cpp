@@ -2,6 +2,7 @@
 #include "methods/focused.hpp"
 #include "methods/method.hpp"
 #include "methods/uniform.hpp"
+#include "methods/xpsm.hpp"
 
 namespace shadowlab {
 
@@ -10,6 +11,11 @@ const std::vector<Method>& all_methods() {
         {"uniform", "Uniform shadow map", "orthographic map fit to the whole scene's bounds", {}, compute_uniform},
         {"focused", "Focused shadow map", "orthographic map fit to the intersection body",
          {body_kernel_setting()}, compute_focused},
+        {"xpsm", "Extended perspective shadow map", "Gusev's XPSM: a projection vector in light space, w clipped at εW",
+         {{"coef", "warp strength: lengthP = coef / cos γ (1 / world units)", "0.05", 1e-6, 100.0, {}},
+          {"epsilonW", "how close to w = 0 the warp may push a caster or receiver", "0.085", 1e-3, 0.999, {}},
+          body_kernel_setting()},
+         compute_xpsm},
     };
     return methods;
 }

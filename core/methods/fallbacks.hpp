@@ -1,0 +1,30 @@
+#pragma once
+// Every fallback a method can take, by name. A setup's fallback text starts with one of these
+// names, then ": " and the particulars, so the CLI, the GUI and the tests can tell them apart.
+#include <array>
+#include <string>
+
+namespace shadowlab::fallback {
+
+inline constexpr const char* empty_scene = "empty scene";
+inline constexpr const char* empty_body = "empty intersection body";
+inline constexpr const char* behind_light = "points behind the light";
+inline constexpr const char* outside_cone = "points outside the light's cone";
+inline constexpr const char* not_directional = "not a directional light";
+inline constexpr const char* nothing_to_warp = "no caster can shadow a visible receiver";
+inline constexpr const char* miners_lamp = "miner's lamp";
+inline constexpr const char* empty_focus_region = "empty focus region";
+
+inline constexpr std::array all{empty_scene, empty_body, behind_light, outside_cone, not_directional,
+                                nothing_to_warp, miners_lamp, empty_focus_region};
+
+// "name: details"
+inline std::string named(const char* name, const std::string& details) { return std::string(name) + ": " + details; }
+
+inline bool is_named(const std::string& text) {
+    for (const char* name : all)
+        if (text.rfind(name, 0) == 0) return true;
+    return false;
+}
+
+}  // namespace shadowlab::fallback

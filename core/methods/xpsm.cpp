@@ -1,0 +1,171 @@
+// Extended Perspective Shadow Maps (Gusev 2007; seed 000, section 4, steps 1 to 18), translated
+// to column vectors. A projection vector P in light space's xy plane sets the warp:
+// w = 1 + length(P) * (unitP · xy), chosen so that the warp depends on the distance to the viewer
+// only (lengthP = coef / cos γ) and clipped so that no caster or receiver reaches w = εW.
+#include "methods/xpsm.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "math/matrix.hpp"
+#include "methods/fallbacks.hpp"
+#include "methods/light_fit.hpp"
+#include "methods/map_fit.hpp"
+#include "methods/warp_common.hpp"
+
+namespace shadowlab {
+namespace {
+
+double min_projection(const std::vector<glm::dvec3>& light_points, const glm::dvec2& unit_p) {
+    double m = INFINITY;
+    for (const glm::dvec3& p : light_points) m = std::min(m, p.x * unit_p.x + p.y * unit_p.y);
+    return m;
+}
+
+struct Warp {
+    glm::dvec2 unit_p;
+    double length_p;
+};
+
+// Steps 4 to 7: the projection vector's length, clipped away from the singularity at w = 0.
+Warp projection_vector(const glm::dvec2& unit_p, double cos_gamma, const std::vector<glm::dvec3>& light_casters,
+                       const std::vector<glm::dvec3>& light_receivers, const Settings& s, Trace* trace) {
+    const double coef = s.number("coef"), epsilon_w = s.number("epsilonW");
+    const double min_casters = min_projection(light_casters, unit_p);      // step 4
+    const double min_receivers = min_projection(light_receivers, unit_p);  // step 4
+    const double max_length_p = (epsilon_w - 1.0) / std::max(min_casters, min_receivers);  // step 5
+    const double optimal = coef / cos_gamma;                                                // step 6
+    const bool clipped = max_length_p > 0.0 && optimal > max_length_p;                     // step 7
+    const Warp warp{unit_p, clipped ? max_length_p : optimal};
+    record(trace, [&](Trace& t) {
+        t.add("xpsm-4", "minCastersProj, minReceiversProj", "min over light-space points of p.xy · unitP",
+              Space::light)
+            .value("minCastersProj", min_casters).value("minReceiversProj", min_receivers);
+        t.add("xpsm-5", "maxLengthP", "(εW - 1) / max(minCastersProj, minReceiversProj)", Space::light)
+            .value("maxLengthP", max_length_p).value("epsilonW", epsilon_w);
+        t.add("xpsm-6", "cos γ and lengthP", "cos γ = V.xy · unitP; lengthP = coef / cos γ", Space::light)
+            .value("cos_gamma", cos_gamma).value("coef", coef).value("lengthP", optimal);
+        t.add("xpsm-7", "Clip lengthP", "if maxLengthP > 0 and lengthP > maxLengthP: lengthP = maxLengthP",
+              Space::light)
+            .value("clipped", clipped ? 1.0 : 0.0).value("lengthP", warp.length_p);
+    });
+    return warp;
+}
+
+// Steps 8 to 10: light space -> PPLS.
+glm::dmat4 ppls_transform(const Warp& w, Trace* trace) {
+    const glm::dvec2 p = w.unit_p;
+    const glm::dmat4 projection = from_rows({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0},
+                                            {p.x * w.length_p, p.y * w.length_p, 0, 1});
+    const glm::dmat4 z_rotation = from_rows({p.x, p.y, 0, 0}, {p.y, -p.x, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1});
+    const glm::dmat4 ppls = z_rotation * projection;  // row-vector "Projection * ZRotation"
+    record(trace, [&](Trace& t) {
+        t.add("xpsm-8", "Projection", "w = 1 + lengthP (unitP · xy): the projection vector as the w row",
+              Space::light).value("Projection", projection);
+        t.add("xpsm-9", "ZRotation", "rotation about z taking unitP onto the x axis", Space::light)
+            .value("ZRotation", z_rotation);
+        t.add("xpsm-10", "PPLS Transform", "Projection * ZRotation (row vectors): light space -> PPLS",
+              Space::ppls).value("PPLS_Transform", ppls);
+    });
+    return ppls;
+}
+
+}  // namespace
+
+ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace) {
+    ShadowSetup setup;
+    const auto body = start_warp("xpsm", in, s, setup, trace);
+    if (!body) return setup;
+    const std::vector<glm::dvec3> receivers = corners_within(in.receivers, body->visible.bounds());
+    const std::vector<glm::dvec3> casters = corners_within(in.casters, body->body.bounds());
+    if (receivers.empty() || casters.empty()) {
+        fall_back_to_focused(fallback::named(fallback::nothing_to_warp, "nothing to warp; focused map used"), in,
+                             *body, setup, trace);
+        return setup;
+    }
+
+    // Step 1: LightSpace, origin at the viewer, z along the light.
+    const glm::dmat4 light_space =
+        light_basis(in.light.direction, stable_up_hint(in.light.direction), in.camera.position).world_to_light;
+    const std::vector<glm::dvec3> light_casters = transformed(casters, light_space);
+    const std::vector<glm::dvec3> light_receivers = transformed(receivers, light_space);
+    // Step 2: the view vector in light space. Step 3: its xy direction.
+    const glm::dvec3 v = glm::dmat3(light_space) * in.camera.view_direction();
+    const double v_xy = glm::length(glm::dvec2(v));
+    record(trace, [&](Trace& t) {
+        t.add("xpsm-1", "LightSpace", "look-at along the light from the viewer: the light travels along +z",
+              Space::light)
+            .value("LightSpace", light_space)
+            .shape("Casters", PointSet{light_casters}).shape("Receivers", PointSet{light_receivers});
+        t.add("xpsm-2", "V", "the view vector in light space", Space::light).value("V", v);
+        t.add("xpsm-3", "unitP", "V.xy / |V.xy|; |V.xy| < 0.1 is the miner's lamp case", Space::light)
+            .value("abs_V_xy", v_xy)
+            .value("unitP", v_xy > 0 ? glm::dvec2(v) / v_xy : glm::dvec2(0.0));
+    });
+    if (v_xy < 0.1) {
+        fall_back_to_focused(fallback::named(fallback::miners_lamp, "|V.xy| = " + std::to_string(v_xy) +
+                                 " < 0.1, the light is almost parallel to the view; focused map used"),
+                             in, *body, setup, trace);
+        return setup;
+    }
+    const Warp warp = projection_vector(glm::dvec2(v) / v_xy, v_xy, light_casters, light_receivers, s, trace);
+    const glm::dmat4 ppls = ppls_transform(warp, trace);
+
+    // Steps 11 and 12: PPLS points (w < εW left out) and their boxes.
+    const double min_w = s.number("epsilonW") * (1.0 - 1e-9);  // the extreme point itself stays in
+    const ProjectedPoints ppls_casters = project(light_casters, ppls, min_w);
+    const ProjectedPoints ppls_receivers = project(light_receivers, ppls, min_w);
+    const Aabb casters_box = bounds_of(ppls_casters.points), receivers_box = bounds_of(ppls_receivers.points);
+    // Step 13: FocusRegion, the xy intersection of the two boxes.
+    const glm::dvec2 focus_min = glm::max(glm::dvec2(casters_box.min), glm::dvec2(receivers_box.min));
+    const glm::dvec2 focus_max = glm::min(glm::dvec2(casters_box.max), glm::dvec2(receivers_box.max));
+    record(trace, [&](Trace& t) {
+        t.add("xpsm-11", "PPLS Casters and Receivers", "points * LightSpace * PPLS Transform; w < εW left out",
+              Space::ppls)
+            .value("casters_left_out", double(ppls_casters.left_out))
+            .value("receivers_left_out", double(ppls_receivers.left_out))
+            .shape("PPLS Casters", PointSet{ppls_casters.points})
+            .shape("PPLS Receivers", PointSet{ppls_receivers.points});
+        t.add("xpsm-12", "PPLS CastersBox, ReceiversBox", "AABBs of the PPLS points", Space::ppls)
+            .shape("PPLS CastersBox", casters_box).shape("PPLS ReceiversBox", receivers_box);
+        t.add("xpsm-13", "FocusRegion", "Intersect 2D (PPLS CastersBox, PPLS ReceiversBox)", Space::ppls)
+            .value("MinPoint", focus_min).value("MaxPoint", focus_max);
+    });
+    if (casters_box.empty() || receivers_box.empty() || focus_min.x >= focus_max.x || focus_min.y >= focus_max.y) {
+        fall_back_to_focused(fallback::named(fallback::empty_focus_region, "no caster's light rays meet a receiver in PPLS; focused map used"),
+                             in, *body, setup, trace);
+        return setup;
+    }
+
+    // Step 14: FocusRegionBasis. Step 15: its inverse, the unit cube transform.
+    const double z_min = std::min(casters_box.min.z, receivers_box.min.z);
+    const double z_max = std::max(casters_box.max.z, receivers_box.max.z);
+    const Aabb focus{{focus_min, z_min}, {focus_max, z_max}};
+    const glm::dmat4 basis = from_rows({focus.extent().x, 0, 0, focus.min.x}, {0, focus.extent().y, 0, focus.min.y},
+                                       {0, 0, focus.extent().z, focus.min.z}, {0, 0, 0, 1});
+    const glm::dmat4 unit_cube = box_to_unit_cube(focus);
+    // Steps 16 and 17: our maps stay in [0,1]^3, so NormalizedSpace is the identity.
+    ShadowMap map;
+    map.world_to_uvz = unit_cube * ppls * light_space;
+    map.z_bias_scale = 1.0 / focus.extent().z;  // step 18: bias / (MaxZ - MinZ)
+    setup.maps.push_back(map);
+    record(trace, [&](Trace& t) {
+        t.add("xpsm-14", "FocusRegionBasis", "scale (Max - Min) and offset Min, with ZMin/ZMax of both boxes",
+              Space::ppls)
+            .value("ZMin", z_min).value("ZMax", z_max).value("FocusRegionBasis", basis)
+            .shape("focus region", focus);
+        t.add("xpsm-15", "UnitCubeTransform",
+              "FocusRegionBasis^-1: (p - Min) / (Max - Min) (the seed's printed step-15 signs are wrong; 3.8 is right)",
+              Space::unit).value("UnitCubeTransform", unit_cube);
+        t.add("xpsm-16", "NormalizedSpace", "identity: maps stay in [0,1]^3 (D3D/OpenGL NDC would follow here)",
+              Space::unit).value("NormalizedSpace", glm::dmat4(1.0));
+        t.add("xpsm-17", "XPSM Transform", "LightSpace, PPLS Transform, UnitCubeTransform, NormalizedSpace",
+              Space::unit).value("XPSM_Transform", map.world_to_uvz);
+        t.add("xpsm-18", "Z bias", "Z' = (Z - bias / (MaxZ - MinZ)) / W", Space::unit)
+            .value("z_bias_scale", map.z_bias_scale);
+    });
+    record_output(setup, receivers, trace);
+    return setup;
+}
+
+}  // namespace shadowlab
