@@ -14,9 +14,10 @@ inline constexpr const char* not_directional = "not a directional light";
 inline constexpr const char* nothing_to_warp = "no caster can shadow a visible receiver";
 inline constexpr const char* miners_lamp = "miner's lamp";
 inline constexpr const char* empty_focus_region = "empty focus region";
+inline constexpr const char* parallel_light = "light parallel to the view";
 
 inline constexpr std::array all{empty_scene, empty_body, behind_light, outside_cone, not_directional,
-                                nothing_to_warp, miners_lamp, empty_focus_region};
+                                nothing_to_warp, miners_lamp, empty_focus_region, parallel_light};
 
 // "name: details"
 inline std::string named(const char* name, const std::string& details) { return std::string(name) + ": " + details; }
