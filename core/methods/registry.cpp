@@ -2,6 +2,7 @@
 #include "methods/focused.hpp"
 #include "methods/lispsm.hpp"
 #include "methods/method.hpp"
+#include "methods/psm.hpp"
 #include "methods/uniform.hpp"
 #include "methods/xpsm.hpp"
 
@@ -12,6 +13,8 @@ const std::vector<Method>& all_methods() {
         {"uniform", "Uniform shadow map", "orthographic map fit to the whole scene's bounds", {}, compute_uniform},
         {"focused", "Focused shadow map", "orthographic map fit to the intersection body",
          {body_kernel_setting()}, compute_focused},
+        {"psm", "Perspective shadow map", "Stamminger and Drettakis: the map built in the camera's post-perspective space",
+         {body_kernel_setting()}, compute_psm},
         {"lispsm", "Light space perspective shadow map", "Wimmer et al.: a perspective warp along the view, in light space",
          {{"eta", "Lloyd's η: -1 uniform, 0 LiSPSM's n_opt, 1 PSM-like", "0", -1.0, 1.0, {}},
           {"n", "warp near distance; 0 = automatic (n_opt)", "0", 0.0, 1e12, {}},

@@ -1,0 +1,8 @@
+#pragma once
+#include "methods/method.hpp"
+
+namespace shadowlab {
+
+ShadowSetup compute_psm(const ShadowInputs& inputs, const Settings& settings, Trace* trace);
+
+}  // namespace shadowlab
