@@ -1,7 +1,9 @@
-// The stability sweep: 10,000 random light and camera configurations, hard cases included
-// (light almost parallel to the view from behind and from in front, light overhead, casters behind
-// the viewer, far/near up to 1e5). Every method must give finite maps, only named fallbacks, and
-// keep visible receivers inside the unit cube.
+// The stability sweep: 10,000 random light and camera configurations over every method, with the
+// hard cases: light almost parallel to the view (γ down to 1e-6 rad) from behind and from in
+// front, light overhead, casters behind the viewer (at the town's edge and 1e4 units back),
+// far/near up to 1e7 and scene scales from 1e-3 to 1e6. Every method must give finite maps and
+// only named fallbacks, keep visible receivers in the unit cube (orthographic fits) or the visible
+// points a caster can shadow (every method).
 #include <gtest/gtest.h>
 
 #include "geometry/intersection_body.hpp"
@@ -13,9 +15,14 @@ using namespace shadowlab::testing;
 
 namespace {
 
+constexpr double kTownSize = 500.0;
+const std::array<double, 6> kScales{1e-3, 1e-1, 1.0, 1e2, 1e4, 1e6};
+
 struct Configuration {
     Camera camera;
     Light light;
+    size_t scale_index;
+    bool far_caster;  // a caster 1e4 units behind the viewer
 };
 
 glm::dvec3 random_unit(std::mt19937& rng) {
@@ -27,80 +34,102 @@ glm::dvec3 random_unit(std::mt19937& rng) {
 
 // A direction at `angle` radians from `axis`.
 glm::dvec3 tilted(const glm::dvec3& axis, double angle, std::mt19937& rng) {
-    glm::dvec3 side = glm::cross(axis, random_unit(rng));
-    side = glm::normalize(side);
+    const glm::dvec3 side = glm::normalize(glm::cross(axis, random_unit(rng)));
     return std::cos(angle) * axis + std::sin(angle) * side;
 }
 
 Configuration random_configuration(int i, std::mt19937& rng) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    Configuration c;
-    c.camera.position = {(u(rng) - 0.5) * 500, 0.5 + 30 * u(rng) * u(rng), (u(rng) - 0.5) * 500};
+    Configuration c{{}, {}, size_t(i) % kScales.size(), false};
+    const double s = kScales[c.scale_index];
+    c.camera.position = s * glm::dvec3((u(rng) - 0.5) * kTownSize, 0.5 + 30 * u(rng) * u(rng), (u(rng) - 0.5) * kTownSize);
     glm::dvec3 view = random_unit(rng);
     view.y = -std::abs(view.y) * 0.5;  // mostly toward the ground and horizon
-    c.camera.target = c.camera.position + glm::normalize(view);
-    c.camera.near = std::pow(10.0, -2.0 + 2.0 * u(rng));
-    c.camera.far = c.camera.near * std::pow(10.0, 1.0 + 4.0 * u(rng));  // far/near from 10 to 1e5
+    c.camera.target = c.camera.position + s * glm::normalize(view);
+    c.camera.near = s * std::pow(10.0, -2.0 + 2.0 * u(rng));
+    c.camera.far = c.camera.near * std::pow(10.0, 1.0 + 6.0 * u(rng));  // far/near from 10 to 1e7
     c.camera.fov_y_deg = 20 + 100 * u(rng);
     const glm::dvec3 v = c.camera.view_direction();
-    const double tiny = std::pow(10.0, -6.0 + 4.0 * u(rng));  // 1e-6 to 1e-2 rad
-    switch (i % 5) {
-        case 0: c.light.direction = tilted(v, tiny, rng); break;   // from behind the viewer
-        case 1: c.light.direction = tilted(-v, tiny, rng); break;  // toward the viewer
-        case 2: c.light.direction = {0, -1, 0}; break;             // overhead
+    const double gamma = std::pow(10.0, -6.0 + 5.0 * u(rng));  // 1e-6 to 0.1 rad
+    switch ((i / kScales.size()) % 6) {
+        case 0: c.light.direction = tilted(v, gamma, rng); break;   // from behind the viewer
+        case 1: c.light.direction = tilted(-v, gamma, rng); break;  // toward the viewer
+        case 2: c.light.direction = {0, -1, 0}; break;              // overhead
         case 3:  // casters behind the viewer: light from behind, camera at the town's edge
-            c.camera.position = {0, 2, 260};
-            c.camera.target = {0, 1.5, 250};
+        case 4:  // and a caster 1e4 units behind it
+            c.camera.position = s * glm::dvec3(0, 2, 0.52 * kTownSize);
+            c.camera.target = s * glm::dvec3(0, 1.5, 0.5 * kTownSize);
             c.light.direction = glm::normalize(glm::dvec3(0.1 * (u(rng) - 0.5), -0.3 * u(rng) - 0.05, -1));
+            c.far_caster = (i / kScales.size()) % 6 == 4;
             break;
         default: c.light.direction = random_unit(rng); break;
     }
     return c;
 }
 
+// The town at each scale, with and without a tall caster 1e4 units behind the edge camera.
+std::vector<ObjectBox> town_boxes(double scale, bool far_caster) {
+    std::vector<ObjectBox> boxes = object_boxes(random_town(150, kTownSize, 11));
+    if (far_caster) boxes.push_back({{{-50, 0, 0.52 * kTownSize + 1e4}, {50, 400, 0.52 * kTownSize + 1e4 + 100}}, true, false});
+    for (ObjectBox& b : boxes) b.box = {b.box.min * scale, b.box.max * scale};
+    return boxes;
+}
+
+void expect_sound_setup(const Method& method, const ShadowInputs& in, const ShadowSetup& setup, int i,
+                        bool check_shadowable) {
+    ASSERT_EQ(setup.maps.size(), 1u);
+    ASSERT_TRUE(finite(setup.maps[0].world_to_uvz)) << method.name << " configuration " << i;
+    ASSERT_TRUE(std::isfinite(setup.maps[0].z_bias_scale)) << method.name << " configuration " << i;
+    if (setup.fallback) ASSERT_TRUE(is_named_fallback(*setup.fallback)) << *setup.fallback;
+    const double tol = 1e-7 * in.scene_bounds.diagonal();
+    if (method.name == "uniform" || method.name == "focused")
+        for (const glm::dvec3& p : in.receiver_points())
+            if (in.frustum.contains(p, -tol)) {
+                const glm::dvec3 uvz = world_to_uvz(setup.maps[0], p);
+                ASSERT_TRUE(in_unit_cube(uvz, 1e-6)) << method.name << " configuration " << i << ": (" << uvz.x
+                                                     << ", " << uvz.y << ", " << uvz.z << ")";
+            }
+    if (check_shadowable)
+        for (const glm::dvec3& p : shadowable_visible_points(in)) {
+            const glm::dvec3 uvz = world_to_uvz(setup.maps[0], p);
+            ASSERT_TRUE(in_unit_cube(uvz, 1e-5)) << method.name << " configuration " << i << ": (" << uvz.x << ", "
+                                                 << uvz.y << ", " << uvz.z << ")";
+        }
+}
+
 }  // namespace
 
 TEST(StabilitySweep, TenThousandConfigurationsGiveFiniteMapsAndNamedFallbacks) {
-    const Scene town = random_town(150, 500.0, 11);
-    const std::vector<ObjectBox> boxes = object_boxes(town);
+    std::array<std::array<std::vector<ObjectBox>, 2>, kScales.size()> boxes;
+    for (size_t k = 0; k < kScales.size(); ++k) boxes[k] = {town_boxes(kScales[k], false), town_boxes(kScales[k], true)};
     std::mt19937 rng(2026);
-    int fallbacks = 0;
+    std::map<std::string, int> fallbacks;
     for (int i = 0; i < 10000; ++i) {
         const Configuration c = random_configuration(i, rng);
-        const ShadowInputs in = gather_inputs(c.camera, c.light, boxes);
+        const ShadowInputs in = gather_inputs(c.camera, c.light, boxes[c.scale_index][c.far_caster]);
         for (const Method& method : all_methods()) {
             const ShadowSetup setup = method.compute(in, resolve_settings(method.name, method.settings, {}), nullptr);
-            ASSERT_EQ(setup.maps.size(), 1u);
-            ASSERT_TRUE(finite(setup.maps[0].world_to_uvz)) << method.name << " configuration " << i;
-            ASSERT_TRUE(std::isfinite(setup.maps[0].z_bias_scale));
-            if (setup.fallback) {
-                ++fallbacks;
-                ASSERT_TRUE(is_named_fallback(*setup.fallback)) << *setup.fallback;
-            }
-            const double tol = 1e-7 * in.scene_bounds.diagonal();
-            for (const glm::dvec3& p : in.receiver_points())
-                if (in.frustum.contains(p, -tol))
-                    ASSERT_TRUE(in_unit_cube(world_to_uvz(setup.maps[0], p), 1e-6)) << method.name << " configuration " << i;
+            expect_sound_setup(method, in, setup, i, i % 10 == 0);
+            if (::testing::Test::HasFatalFailure()) return;
+            if (setup.fallback) ++fallbacks[method.name];
         }
     }
-    RecordProperty("fallbacks", fallbacks);
+    for (const auto& [name, count] : fallbacks) RecordProperty("fallbacks_" + name, count);
 }
 
 TEST(StabilitySweep, FloatClipperAgreesWithExactKernelOnRandomConfigurations) {
-    const Scene town = random_town(100, 500.0, 5);
-    const std::vector<ObjectBox> boxes = object_boxes(town);
     std::mt19937 rng(99);
     int compared = 0;
     for (int i = 0; i < 300; ++i) {
         const Configuration c = random_configuration(i, rng);
-        const ShadowInputs in = gather_inputs(c.camera, c.light, boxes);
+        const ShadowInputs in = gather_inputs(c.camera, c.light, town_boxes(kScales[c.scale_index], c.far_caster));
         const BodyInput input{in.frustum, in.scene_bounds, in.light.homogeneous()};
         const IntersectionBody exact = intersection_body(input, BodyKernel::epeck);
         const IntersectionBody fast = intersection_body(input, BodyKernel::float_clipper);
         const double volume = exact.body.volume();
-        const double scale = in.scene_bounds.extent().x * in.scene_bounds.extent().y * in.scene_bounds.extent().z;
-        if (volume < 1e-9 * scale) {  // (near-)empty: both must say so or agree on a sliver
-            EXPECT_LE(fast.body.volume(), 1e-6 * scale) << "configuration " << i;
+        const glm::dvec3 e = in.scene_bounds.extent();
+        if (volume < 1e-9 * e.x * e.y * e.z) {  // (near-)empty: the float path must not invent volume
+            EXPECT_LE(fast.body.volume(), 1e-6 * e.x * e.y * e.z) << "configuration " << i;
             continue;
         }
         ++compared;

@@ -1,5 +1,6 @@
 #pragma once
 // Scenes and checks shared by the method tests.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>

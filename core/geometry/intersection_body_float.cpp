@@ -39,9 +39,12 @@ std::optional<Plane> silhouette_plane(const glm::dvec3& a, const glm::dvec3& b,
 // Bounding planes of hull(V ∪ light): faces of V turned away from the light, and silhouette planes.
 std::vector<Plane> extrusion_planes(const ConvexPolyhedron& v, const glm::dvec4& light,
                                     double tolerance) {
+    // A face looks at the light when the light is outside its plane: a distance for a point light,
+    // a cosine (unitless) for a direction.
+    const double facing_tolerance = light.w == 0.0 ? 1e-12 : tolerance;
     std::vector<bool> faces_light(v.faces.size());
     for (size_t f = 0; f < v.faces.size(); ++f)
-        faces_light[f] = v.faces[f].plane.signed_distance(light) > tolerance;
+        faces_light[f] = v.faces[f].plane.signed_distance(light) > facing_tolerance;
 
     std::vector<Plane> planes;
     std::map<std::pair<int, int>, size_t> edge_face;  // directed edge -> face

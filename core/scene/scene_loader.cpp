@@ -1,0 +1,502 @@
+// Scene files (JSON). Every key is optional unless marked required; defaults are those of the
+// scene/*.hpp headers (the first type listed is the default). A key that the object, light or
+// camera does not use is an error.
+//
+// { "name": "...", "description": "...",
+//   "camera":  {"position": [x,y,z], "target": [x,y,z], "up": [0,1,0],
+//               "fov_y_deg": 60, "aspect": 1.7778, "near": 0.1, "far": 100},
+//   "light":   {"type": "directional" | "spot" | "point",         // required object
+//               "direction": [x,y,z],                            // directional, spot
+//               "position": [x,y,z],                             // spot, point
+//               "cone_deg": 60},                                 // spot: full apex angle
+//   "objects": [                                                 // required, non-empty
+//     {"type": "box" | "sphere" | "plane" | "cylinder" | "mesh", "name": "<type>_<index>",
+//      "position": [x,y,z], "rotation": [degrees about x, y, z], "scale": [x,y,z] or s,
+//      "casts": true, "receives": true,
+//      "size": [x,y,z] (box) or [x,z] (plane), "radius": r (sphere, cylinder),
+//      "height": h (cylinder), "file": "path relative to the scene file" (mesh, required)}]}
+//
+// Numeric rules (validate_scene): all numbers finite; sizes, radius, height, scale, aspect and
+// near positive; far > near; fov_y_deg and cone_deg in (0, 180); directions non-zero (normalised
+// after loading); camera target != position and up not parallel to the view direction.
+#include "scene/scene_loader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <nlohmann/json.hpp>
+
+#include "scene/scene_error.hpp"
+
+namespace shadowlab {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kMinLength = 1e-12;        // shorter vectors count as zero
+constexpr double kMinSineToView = 1e-6;     // camera up closer to the view direction is parallel
+constexpr std::size_t kMaxShownChars = 80;  // longer JSON values are shortened in messages
+
+constexpr std::array kShapes{Shape::box, Shape::sphere, Shape::plane, Shape::cylinder, Shape::mesh};
+constexpr std::array kLightTypes{LightType::directional, LightType::spot, LightType::point};
+
+std::string join_path(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+}
+
+std::string join(const std::vector<std::string>& items) {
+    std::string out;
+    for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
+    return out;
+}
+
+std::string format_number(double value) {
+    std::ostringstream out;
+    out << std::setprecision(15) << value;
+    return out.str();
+}
+
+std::vector<double> components(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+std::string format_numbers(const std::vector<double>& values) {
+    if (values.size() == 1) return format_number(values[0]);
+    std::vector<std::string> items;
+    for (double value : values) items.push_back(format_number(value));
+    std::string out = "[";  // not "[" + ...: GCC 12 warns falsely (-Wrestrict)
+    out += join(items);
+    return out += "]";
+}
+
+// A JSON value as shown in messages, shortened when long.
+std::string show(const json& value) {
+    const std::string text = value.dump();
+    return text.size() <= kMaxShownChars ? text : text.substr(0, kMaxShownChars - 3) + "...";
+}
+
+// "three numbers", "a positive number", "two finite numbers".
+std::string count_of(std::size_t count, const std::string& adjective = "") {
+    static const char* const words[] = {"no", "a", "two", "three"};
+    const std::string word = count < 4 ? words[count] : std::to_string(count);
+    return word + (adjective.empty() ? "" : " " + adjective) +
+           (count == 1 ? " number" : " numbers");
+}
+
+// ---- JSON syntax ---------------------------------------------------------------------------
+
+// A SAX pass that only tracks where it is, so that a syntax error is reported with its line and
+// column, and a number too large for a double (1e999; nlohmann refuses it) with its JSON path.
+class JsonErrorLocator final : public nlohmann::json_sax<json> {
+public:
+    explicit JsonErrorLocator(const std::string& file) : file_(file) {}
+
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return open(false); }
+    bool key(string_t& key) override {
+        levels_.back().key = key;
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(true); }
+    bool end_array() override { return close(); }
+
+    bool parse_error(std::size_t, const std::string& token, const json::exception& error) override {
+        if (error.id == 406)  // "number overflow": the only error with a known JSON path
+            throw SceneError(file_, path(), "expected a finite number, got " + token);
+        const std::string message = error.what();
+        const std::string marker = "parse error at ";  // followed by "line L, column C: ..."
+        const std::size_t at = message.find(marker);
+        if (at == std::string::npos) throw SceneError(file_, "", "malformed JSON: " + message);
+        throw SceneError(file_, "", "malformed JSON at " + message.substr(at + marker.size()));
+    }
+
+private:
+    struct Level {
+        bool array;
+        std::size_t index = 0;  // arrays: the element being read
+        std::string key;        // objects: the member being read
+    };
+
+    bool open(bool array) {
+        levels_.push_back({array, 0, {}});
+        return true;
+    }
+    bool close() {
+        levels_.pop_back();
+        return value();
+    }
+    bool value() {
+        if (!levels_.empty() && levels_.back().array) ++levels_.back().index;
+        return true;
+    }
+    std::string path() const {
+        std::string out;
+        for (const Level& level : levels_)
+            out = level.array ? out + "[" + std::to_string(level.index) + "]"
+                              : join_path(out, level.key);
+        return out;
+    }
+
+    const std::string& file_;
+    std::vector<Level> levels_;
+};
+
+json parse_json(const std::string& text, const std::string& file) {
+    JsonErrorLocator locator(file);
+    json::sax_parse(text, &locator);
+    return json::parse(text);
+}
+
+// ---- JSON structure: keys and types --------------------------------------------------------
+
+std::vector<std::string> light_keys(LightType type) {
+    switch (type) {
+        case LightType::directional: return {"type", "direction"};
+        case LightType::spot: return {"type", "direction", "position", "cone_deg"};
+        case LightType::point: return {"type", "position"};
+    }
+    return {};
+}
+
+std::vector<std::string> object_keys(Shape shape) {
+    std::vector<std::string> keys{"type",  "name",  "position", "rotation",
+                                  "scale", "casts", "receives"};
+    switch (shape) {
+        case Shape::box: keys.push_back("size"); break;
+        case Shape::sphere: keys.push_back("radius"); break;
+        case Shape::plane: keys.push_back("size"); break;
+        case Shape::cylinder: keys.insert(keys.end(), {"radius", "height"}); break;
+        case Shape::mesh: keys.push_back("file"); break;
+    }
+    return keys;
+}
+
+const json* find_field(const json& object, const char* key) {
+    const auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+}
+
+// Reads the document into a Scene, checking keys and types; the numeric rules are
+// validate_scene's. Meshes are loaded here, each file once.
+class SceneReader {
+public:
+    explicit SceneReader(const std::string& file) : file_(file) {}
+
+    Scene read(const json& root) {
+        expect_object(root, "");
+        check_keys(root, "", {"name", "description", "camera", "light", "objects"}, "a scene");
+        Scene scene;
+        scene.source_file = file_;
+        std::string description;  // documentation only
+        read_field(root, "", "name", scene.name);
+        read_field(root, "", "description", description);
+        if (const json* camera = find_field(root, "camera")) scene.camera = read_camera(*camera);
+        scene.light = read_light(required(root, "light"));
+        scene.objects = read_objects(required(root, "objects"));
+        return scene;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+        throw SceneError(file_, path, problem);
+    }
+    void expect(bool ok, const std::string& path, const std::string& expected,
+                const json& got) const {
+        if (!ok) fail(path, "expected " + expected + ", got " + show(got));
+    }
+    void expect_object(const json& value, const std::string& path) const {
+        expect(value.is_object(), path, "an object", value);
+    }
+    const json& required(const json& object, const char* key) const {
+        const json* value = find_field(object, key);
+        if (!value) fail(key, "required, but missing");
+        return *value;
+    }
+    void check_keys(const json& object, const std::string& path,
+                    const std::vector<std::string>& allowed, const std::string& owner) const {
+        for (const auto& [key, value] : object.items())
+            if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+                fail(join_path(path, key),
+                     "unknown key; allowed for " + owner + ": " + join(allowed));
+    }
+
+    // One parse() per field type, so that read_field() serves them all.
+    void parse(const json& value, const std::string& path, double& out) const {
+        expect(value.is_number(), path, "a number", value);
+        out = value.get<double>();
+    }
+    void parse(const json& value, const std::string& path, glm::dvec3& out) const {
+        const std::vector<double> v = numbers(value, path, 3);
+        out = {v[0], v[1], v[2]};
+    }
+    void parse(const json& value, const std::string& path, bool& out) const {
+        expect(value.is_boolean(), path, "true or false", value);
+        out = value.get<bool>();
+    }
+    void parse(const json& value, const std::string& path, std::string& out) const {
+        expect(value.is_string(), path, "a string", value);
+        out = value.get<std::string>();
+    }
+    void parse(const json& value, const std::string& path, Shape& out) const {
+        out = parse_enum(value, path, kShapes);
+    }
+    void parse(const json& value, const std::string& path, LightType& out) const {
+        out = parse_enum(value, path, kLightTypes);
+    }
+    template <class T>
+    void read_field(const json& object, const std::string& path, const char* key, T& out) const {
+        if (const json* value = find_field(object, key)) parse(*value, join_path(path, key), out);
+    }
+
+    std::vector<double> numbers(const json& value, const std::string& path,
+                                std::size_t count) const {
+        const bool ok = value.is_array() && value.size() == count &&
+                        std::all_of(value.begin(), value.end(),
+                                    [](const json& item) { return item.is_number(); });
+        expect(ok, path, "an array of " + count_of(count), value);
+        std::vector<double> out;
+        for (const json& item : value) out.push_back(item.get<double>());
+        return out;
+    }
+    template <class Enum, std::size_t N>
+    Enum parse_enum(const json& value, const std::string& path,
+                    const std::array<Enum, N>& all) const {
+        std::vector<std::string> names;
+        for (Enum item : all) {
+            if (value.is_string() && value.get<std::string>() == to_string(item)) return item;
+            names.push_back('"' + std::string(to_string(item)) + '"');
+        }
+        fail(path, "expected one of " + join(names) + ", got " + show(value));
+    }
+
+    Camera read_camera(const json& value) const {
+        const std::string path = "camera";
+        expect_object(value, path);
+        check_keys(value, path, {"position", "target", "up", "fov_y_deg", "aspect", "near", "far"},
+                   "the camera");
+        Camera camera;
+        read_field(value, path, "position", camera.position);
+        read_field(value, path, "target", camera.target);
+        read_field(value, path, "up", camera.up);
+        read_field(value, path, "fov_y_deg", camera.fov_y_deg);
+        read_field(value, path, "aspect", camera.aspect);
+        read_field(value, path, "near", camera.near);
+        read_field(value, path, "far", camera.far);
+        return camera;
+    }
+
+    Light read_light(const json& value) const {
+        const std::string path = "light";
+        expect_object(value, path);
+        Light light;
+        read_field(value, path, "type", light.type);
+        check_keys(value, path, light_keys(light.type),
+                   std::string("a ") + to_string(light.type) + " light");
+        read_field(value, path, "direction", light.direction);
+        read_field(value, path, "position", light.position);
+        read_field(value, path, "cone_deg", light.cone_deg);
+        return light;
+    }
+
+    std::vector<SceneObject> read_objects(const json& value) {
+        expect(value.is_array(), "objects", "an array of objects", value);
+        std::vector<SceneObject> objects;
+        for (std::size_t i = 0; i < value.size(); ++i)
+            objects.push_back(read_object(value[i], "objects[" + std::to_string(i) + "]", i));
+        return objects;
+    }
+
+    SceneObject read_object(const json& value, const std::string& path, std::size_t index) {
+        expect_object(value, path);
+        SceneObject object;
+        read_field(value, path, "type", object.shape);
+        check_keys(value, path, object_keys(object.shape),
+                   std::string("a ") + to_string(object.shape));
+        object.name = std::string(to_string(object.shape)) + "_" + std::to_string(index);
+        read_field(value, path, "name", object.name);
+        read_field(value, path, "position", object.position);
+        read_field(value, path, "rotation", object.rotation_deg);
+        read_field(value, path, "radius", object.radius);
+        read_field(value, path, "height", object.height);
+        read_field(value, path, "casts", object.casts);
+        read_field(value, path, "receives", object.receives);
+        if (const json* scale = find_field(value, "scale"))
+            object.scale = read_scale(*scale, join_path(path, "scale"));
+        if (const json* size = find_field(value, "size"))
+            object.size = read_size(*size, join_path(path, "size"), object);
+        if (object.shape == Shape::mesh) load_mesh(value, join_path(path, "file"), object);
+        return object;
+    }
+
+    glm::dvec3 read_scale(const json& value, const std::string& path) const {
+        if (value.is_number()) return glm::dvec3(value.get<double>());
+        expect(value.is_array(), path, "a number or an array of three numbers", value);
+        glm::dvec3 scale;
+        parse(value, path, scale);
+        return scale;
+    }
+
+    // A box has three extents, a plane two: [x, z].
+    glm::dvec3 read_size(const json& value, const std::string& path,
+                         const SceneObject& object) const {
+        if (object.shape == Shape::box) {
+            glm::dvec3 size;
+            parse(value, path, size);
+            return size;
+        }
+        const std::vector<double> xz = numbers(value, path, 2);
+        return {xz[0], object.size.y, xz[1]};
+    }
+
+    void load_mesh(const json& value, const std::string& path, SceneObject& object) {
+        const json* file = find_field(value, "file");
+        if (!file) fail(path, "required for a mesh, but missing");
+        parse(*file, path, object.mesh_file);
+        std::shared_ptr<const TriangleMesh>& mesh = meshes_[object.mesh_file];
+        if (!mesh)
+            mesh = std::make_shared<const TriangleMesh>(
+                load_triangle_mesh(object.mesh_file, file_, path));
+        object.mesh = mesh;
+    }
+
+    const std::string& file_;
+    std::map<std::string, std::shared_ptr<const TriangleMesh>> meshes_;
+};
+
+// ---- Numeric rules -------------------------------------------------------------------------
+
+class SceneValidator {
+public:
+    explicit SceneValidator(const std::string& file) : file_(file) {}
+
+    void check(const Scene& scene) const {
+        check_camera(scene.camera);
+        check_light(scene.light);
+        if (scene.objects.empty()) fail("objects", "expected at least one object, got none");
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+            check_object(scene.objects[i], "objects[" + std::to_string(i) + "]");
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+        throw SceneError(file_, path, problem);
+    }
+    void expect(bool ok, const std::string& path, const std::string& expected,
+                const std::vector<double>& got) const {
+        if (!ok) fail(path, "expected " + expected + ", got " + format_numbers(got));
+    }
+
+    void check_numbers(const std::vector<double>& values, const std::string& path,
+                       bool positive) const {
+        const auto all = [&](auto predicate) {
+            return std::all_of(values.begin(), values.end(), predicate);
+        };
+        expect(all([](double x) { return std::isfinite(x); }), path,
+               count_of(values.size(), "finite"), values);
+        if (positive)
+            expect(all([](double x) { return x > 0.0; }), path, count_of(values.size(), "positive"),
+                   values);
+    }
+    void finite(double x, const std::string& path) const { check_numbers({x}, path, false); }
+    void finite(const glm::dvec3& v, const std::string& path) const {
+        check_numbers(components(v), path, false);
+    }
+    void positive(double x, const std::string& path) const { check_numbers({x}, path, true); }
+    void positive(const glm::dvec3& v, const std::string& path) const {
+        check_numbers(components(v), path, true);
+    }
+    void direction(const glm::dvec3& v, const std::string& path) const {
+        finite(v, path);
+        expect(glm::length(v) > kMinLength, path, "a non-zero direction", components(v));
+    }
+    void angle(double degrees, const std::string& path) const {
+        finite(degrees, path);
+        expect(degrees > 0.0 && degrees < 180.0, path, "an angle in (0, 180) degrees", {degrees});
+    }
+
+    void check_camera(const Camera& camera) const {
+        finite(camera.position, "camera.position");
+        finite(camera.target, "camera.target");
+        expect(glm::length(camera.target - camera.position) > kMinLength, "camera.target",
+               "a point different from position", components(camera.target));
+        direction(camera.up, "camera.up");
+        const double sine =
+            glm::length(glm::cross(glm::normalize(camera.up), camera.view_direction()));
+        expect(sine > kMinSineToView, "camera.up", "a direction not parallel to the view direction",
+               components(camera.up));
+        angle(camera.fov_y_deg, "camera.fov_y_deg");
+        positive(camera.aspect, "camera.aspect");
+        positive(camera.near, "camera.near");
+        finite(camera.far, "camera.far");
+        if (!(camera.far > camera.near))
+            fail("camera.far", "must be greater than near (" + format_number(camera.near) +
+                                   "), got " + format_number(camera.far));
+    }
+
+    // Only the fields the light's type uses.
+    void check_light(const Light& light) const {
+        if (light.type != LightType::point) direction(light.direction, "light.direction");
+        if (light.type != LightType::directional) finite(light.position, "light.position");
+        if (light.type == LightType::spot) angle(light.cone_deg, "light.cone_deg");
+    }
+
+    // Only the fields the object's shape uses.
+    void check_object(const SceneObject& object, const std::string& path) const {
+        finite(object.position, path + ".position");
+        finite(object.rotation_deg, path + ".rotation");
+        positive(object.scale, path + ".scale");
+        switch (object.shape) {
+            case Shape::box: positive(object.size, path + ".size"); break;
+            case Shape::plane:  // [x, z]
+                check_numbers({object.size.x, object.size.z}, path + ".size", true);
+                break;
+            case Shape::sphere: positive(object.radius, path + ".radius"); break;
+            case Shape::cylinder:
+                positive(object.radius, path + ".radius");
+                positive(object.height, path + ".height");
+                break;
+            case Shape::mesh:
+                if (!object.mesh) fail(path + ".file", "mesh not loaded: " + object.mesh_file);
+                break;
+        }
+    }
+
+    const std::string& file_;
+};
+
+}  // namespace
+
+Scene load_scene(const std::string& path) {
+    std::error_code error;
+    std::ifstream in(path, std::ios::binary);
+    if (!std::filesystem::is_regular_file(path, error) || !in)
+        throw SceneError(path, "", "cannot open file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_scene(text.str(), path);
+}
+
+Scene parse_scene(const std::string& json_text, const std::string& file) {
+    Scene scene = SceneReader(file).read(parse_json(json_text, file));
+    validate_scene(scene);
+    scene.light.direction = glm::normalize(scene.light.direction);
+    scene.camera.up = glm::normalize(scene.camera.up);
+    return scene;
+}
+
+void validate_scene(const Scene& scene) { SceneValidator(scene.source_file).check(scene); }
+
+}  // namespace shadowlab
