@@ -22,8 +22,8 @@ double lispsm_n(double z_n, double z_f, double sin_gamma, double eta) {
 
 namespace {
 
-// A warp weaker than this (n this many times the body's depth) is no warp at all.
-constexpr double kNoWarp = 1e6;
+// A warp weaker than this (n this many times the body's depth: under 0.01% of distortion) is none.
+constexpr double kNoWarp = 1e4;
 
 // The perspective along +y from `centre`: x' = x/y, z' = z/y, y' = f (y - n) / ((f - n) y), all
 // relative to the centre; light rays (along z) keep their x', y'.
