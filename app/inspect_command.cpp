@@ -23,7 +23,14 @@ std::string format_value(const TraceValue& value, const std::string& indent) {
         }
         return out;
     }
-    return " " + to_json(value).dump();
+    if (const auto* text = std::get_if<std::string>(&value)) return " " + *text;
+    std::string out;
+    for (const auto& number : to_json(value).is_array() ? to_json(value) : Json::array({to_json(value)})) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.6g", number.get<double>());
+        out += (out.empty() ? "" : ", ") + std::string(buffer);
+    }
+    return std::holds_alternative<double>(value) ? " " + out : " [" + out + "]";
 }
 
 std::string describe(const NamedGeometry& g) {
@@ -31,7 +38,7 @@ std::string describe(const NamedGeometry& g) {
         using T = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<T, PointSet>) return std::to_string(s.points.size()) + " points";
         else if constexpr (std::is_same_v<T, Aabb>)
-            return "box " + to_json(TraceValue(s.min)).dump() + " .. " + to_json(TraceValue(s.max)).dump();
+            return "box" + format_value(s.min, "") + " .." + format_value(s.max, "");
         else if constexpr (std::is_same_v<T, ConvexPolyhedron>)
             return "convex polyhedron, " + std::to_string(s.vertices.size()) + " vertices, " +
                    std::to_string(s.faces.size()) + " faces";
@@ -45,7 +52,8 @@ void print_text(const std::string& scene_file, const Method& method, const Setti
               << "method:   " << method.name << " (" << method.title << ")\n";
     std::cout << "settings:";
     for (const auto& [key, value] : settings.values())
-        std::cout << " " << key << "=" << std::visit([](const auto& v) { return Json(v).dump(); }, value);
+        std::cout << " " << key << "=" << (std::holds_alternative<double>(value)
+                                               ? Json(std::get<double>(value)).dump() : std::get<std::string>(value));
     std::cout << (settings.values().empty() ? " none\n" : "\n");
     std::cout << "inputs:   " << inputs.receivers.size() << " receiver boxes, " << inputs.casters.size()
               << " caster boxes\n"

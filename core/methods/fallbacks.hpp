@@ -15,9 +15,12 @@ inline constexpr const char* nothing_to_warp = "no caster can shadow a visible r
 inline constexpr const char* miners_lamp = "miner's lamp";
 inline constexpr const char* empty_focus_region = "empty focus region";
 inline constexpr const char* parallel_light = "light parallel to the view";
+inline constexpr const char* degenerate_centre_line = "degenerate centre line";
+inline constexpr const char* focus_out_of_range = "focus point out of the 80% rule's range";
 
 inline constexpr std::array all{empty_scene, empty_body, behind_light, outside_cone, not_directional,
-                                nothing_to_warp, miners_lamp, empty_focus_region, parallel_light};
+                                nothing_to_warp, miners_lamp, empty_focus_region, parallel_light,
+                                degenerate_centre_line, focus_out_of_range};
 
 // "name: details"
 inline std::string named(const char* name, const std::string& details) { return std::string(name) + ": " + details; }

@@ -3,6 +3,7 @@
 #include "methods/lispsm.hpp"
 #include "methods/method.hpp"
 #include "methods/psm.hpp"
+#include "methods/tsm.hpp"
 #include "methods/uniform.hpp"
 #include "methods/xpsm.hpp"
 
@@ -20,6 +21,11 @@ const std::vector<Method>& all_methods() {
           {"n", "warp near distance; 0 = automatic (n_opt)", "0", 0.0, 1e12, {}},
           body_kernel_setting()},
          compute_lispsm},
+        {"tsm", "Trapezoidal shadow map", "Martin and Tan: the view, seen from the light, bounded by a trapezoid warped onto the map",
+         {{"focus", "80% rule: the focus region, this fraction of the view's depth, ends on the map's 80% line", "0.5",
+           0.05, 1.0, {}},
+          body_kernel_setting()},
+         compute_tsm},
         {"xpsm", "Extended perspective shadow map", "Gusev's XPSM: a projection vector in light space, w clipped at εW",
          {{"coef", "warp strength: lengthP = coef / cos γ (1 / world units)", "0.05", 1e-6, 100.0, {}},
           {"epsilonW", "how close to w = 0 the warp may push a caster or receiver", "0.085", 1e-3, 0.999, {}},
