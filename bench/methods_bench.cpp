@@ -65,6 +65,11 @@ BENCHMARK_CAPTURE(method_setup, focused_float, "focused", "float", false)->Arg(1
 BENCHMARK_CAPTURE(method_setup, focused_float_traced, "focused", "float", true)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(method_setup, focused_epick, "focused", "epick", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(method_setup, focused_epeck, "focused", "epeck", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(method_setup, psm, "psm", "float", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(method_setup, lispsm, "lispsm", "float", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(method_setup, tsm, "tsm", "float", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(method_setup, xpsm, "xpsm", "float", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(method_setup, xpsm_traced, "xpsm", "float", true)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(body, float_clipper, BodyKernel::float_clipper)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(body, epick, BodyKernel::epick)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(body, epeck, BodyKernel::epeck)->Unit(benchmark::kMicrosecond);

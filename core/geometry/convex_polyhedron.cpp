@@ -61,11 +61,14 @@ std::vector<int> sorted_cap(const std::vector<glm::dvec3>& vertices, std::vector
     const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 a = glm::normalize(glm::cross(normal, helper));
     const glm::dvec3 b = glm::cross(normal, a);
-    auto angle = [&](int i) {
+    std::vector<std::pair<double, int>> by_angle;
+    by_angle.reserve(cap.size());
+    for (int i : cap) {
         const glm::dvec3 d = vertices[i] - centre;
-        return std::atan2(glm::dot(d, b), glm::dot(d, a));
-    };
-    std::sort(cap.begin(), cap.end(), [&](int i, int j) { return angle(i) < angle(j); });
+        by_angle.emplace_back(std::atan2(glm::dot(d, b), glm::dot(d, a)), i);
+    }
+    std::sort(by_angle.begin(), by_angle.end());
+    for (size_t k = 0; k < cap.size(); ++k) cap[k] = by_angle[k].second;
     return cap;
 }
 
@@ -102,15 +105,15 @@ ConvexPolyhedron clip(const ConvexPolyhedron& poly, const Plane& plane, double t
     if (!any_inside) return {};
 
     std::vector<glm::dvec3> vertices = poly.vertices;
-    std::map<std::pair<int, int>, int> cut_vertex;  // one new vertex per crossing edge
+    std::vector<std::pair<std::pair<int, int>, int>> cut_vertex;  // one new vertex per crossing edge
     auto crossing = [&](int a, int b) {
-        const auto key = std::minmax(a, b);
-        auto [it, added] = cut_vertex.try_emplace(key, int(vertices.size()));
-        if (added) {
-            const double t = distance[a] / (distance[a] - distance[b]);
-            vertices.push_back(glm::mix(poly.vertices[a], poly.vertices[b], t));
-        }
-        return it->second;
+        const std::pair<int, int> key = std::minmax(a, b);
+        for (const auto& [edge, index] : cut_vertex)
+            if (edge == key) return index;
+        const double t = distance[a] / (distance[a] - distance[b]);
+        vertices.push_back(glm::mix(poly.vertices[a], poly.vertices[b], t));
+        cut_vertex.push_back({key, int(vertices.size()) - 1});
+        return int(vertices.size()) - 1;
     };
 
     std::vector<PolyFace> faces;

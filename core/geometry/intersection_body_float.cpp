@@ -1,8 +1,6 @@
 // The intersection body with our own floating-point plane clipper. The extrusion of V toward the
 // light is itself an intersection of half-spaces: V's faces that turn away from the light, plus
 // one plane through each silhouette edge and the light. So B = S clipped by those planes.
-#include <map>
-#include <utility>
 #include <vector>
 
 #include "geometry/intersection_body.hpp"
@@ -15,8 +13,15 @@ double clip_tolerance(const Aabb& s) {
     return 1e-10 * (s.diagonal() + glm::length(s.center()));
 }
 
+bool cuts(const ConvexPolyhedron& poly, const Plane& plane, double tolerance) {
+    for (const glm::dvec3& v : poly.vertices)
+        if (plane.signed_distance(v) > tolerance) return true;
+    return false;
+}
+
 ConvexPolyhedron clipped(ConvexPolyhedron poly, const std::vector<Plane>& planes, double tolerance) {
     for (const Plane& plane : planes) {
+        if (!cuts(poly, plane, tolerance)) continue;  // redundant plane: no copy
         poly = clip(poly, plane, tolerance);
         if (poly.empty()) break;
     }
@@ -47,19 +52,21 @@ std::vector<Plane> extrusion_planes(const ConvexPolyhedron& v, const glm::dvec4&
         faces_light[f] = v.faces[f].plane.signed_distance(light) > facing_tolerance;
 
     std::vector<Plane> planes;
-    std::map<std::pair<int, int>, size_t> edge_face;  // directed edge -> face
+    std::vector<int> face_of_edge(v.vertices.size() * v.vertices.size(), -1);  // directed edge a->b
+    const size_t n = v.vertices.size();
     for (size_t f = 0; f < v.faces.size(); ++f) {
         if (!faces_light[f]) planes.push_back(v.faces[f].plane);
         const auto& loop = v.faces[f].loop;
-        for (size_t k = 0; k < loop.size(); ++k) edge_face[{loop[k], loop[(k + 1) % loop.size()]}] = f;
+        for (size_t k = 0; k < loop.size(); ++k) face_of_edge[loop[k] * n + loop[(k + 1) % loop.size()]] = int(f);
     }
+    // A silhouette edge: its face looks at the light, its twin's face does not.
     const glm::dvec3 inner = v.centroid();
-    for (const auto& [edge, f] : edge_face) {
-        auto twin = edge_face.find({edge.second, edge.first});
-        if (twin == edge_face.end() || !faces_light[f] || faces_light[twin->second]) continue;
-        if (auto plane = silhouette_plane(v.vertices[edge.first], v.vertices[edge.second], light, inner))
-            planes.push_back(*plane);
-    }
+    for (size_t a = 0; a < n; ++a)
+        for (size_t b = 0; b < n; ++b) {
+            const int f = face_of_edge[a * n + b], g = face_of_edge[b * n + a];
+            if (f < 0 || g < 0 || !faces_light[f] || faces_light[g]) continue;
+            if (auto plane = silhouette_plane(v.vertices[a], v.vertices[b], light, inner)) planes.push_back(*plane);
+        }
     return planes;
 }
 

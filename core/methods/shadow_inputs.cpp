@@ -1,6 +1,7 @@
 #include "methods/shadow_inputs.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace shadowlab {
 
@@ -20,25 +21,17 @@ double min_distance(const Aabb& b, const Plane& p) {
     return p.signed_distance(nearest);
 }
 
-bool meets_frustum(const Aabb& box, const Frustum& frustum) {
-    for (const Plane& p : frustum.planes)
-        if (min_distance(box, p) > 0.0) return false;
-    return true;
-}
-
-// Can the box's shadow (the box swept away from the light, at most `reach` for a directional
-// light) enter the frustum? A plane separates them when the box is outside it and the sweep
-// only moves further out (conservative: true when unsure).
-bool shadow_meets_frustum(const Aabb& box, const Light& light, double reach, const Frustum& frustum) {
-    for (const Plane& p : frustum.planes) {
-        const double d = min_distance(box, p);
-        if (d <= 0.0) continue;
-        const double swept = light.is_directional()
-                                 ? d + std::min(0.0, reach * glm::dot(p.normal, light.direction))
-                                 : (p.signed_distance(light.position) <= d ? d : 0.0);
-        if (swept > 0.0) return false;
+// How far outside a frustum plane a box may lie and still cast a shadow in: its shadow (the box
+// swept away from the light, at most `reach` for a directional light) crosses the plane only
+// when the sweep moves inward. Conservative: a box within it counts as a caster.
+std::array<double, 6> caster_allowance(const Frustum& frustum, const Light& light, double reach) {
+    std::array<double, 6> allowance;
+    for (size_t i = 0; i < 6; ++i) {
+        const Plane& p = frustum.planes[i];
+        allowance[i] = light.is_directional() ? std::max(0.0, -reach * glm::dot(p.normal, light.direction))
+                                              : std::max(0.0, p.signed_distance(light.position));
     }
-    return true;
+    return allowance;
 }
 
 std::vector<glm::dvec3> corners_of(const std::vector<Aabb>& boxes) {
@@ -70,9 +63,18 @@ ShadowInputs gather_inputs(const Camera& camera, const Light& light, const std::
     for (const ObjectBox& o : objects) in.scene_bounds.extend(o.box);
     in.scene_bounds = padded(in.scene_bounds);
     const double reach = in.scene_bounds.diagonal();
+    in.receivers.reserve(objects.size());
+    in.casters.reserve(objects.size());
+    const std::array<double, 6> allowance = caster_allowance(in.frustum, light, reach);
     for (const ObjectBox& o : objects) {
-        if (o.receives && meets_frustum(o.box, in.frustum)) in.receivers.push_back(o.box);
-        if (o.casts && shadow_meets_frustum(o.box, light, reach, in.frustum)) in.casters.push_back(o.box);
+        bool receiver = o.receives, caster = o.casts;  // until a plane separates it from the view
+        for (size_t i = 0; i < 6 && (receiver || caster); ++i) {
+            const double d = min_distance(o.box, in.frustum.planes[i]);
+            receiver &= d <= 0.0;
+            caster &= d <= allowance[i];
+        }
+        if (receiver) in.receivers.push_back(o.box);
+        if (caster) in.casters.push_back(o.box);
     }
     return in;
 }
