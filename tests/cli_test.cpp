@@ -9,6 +9,7 @@
 #include <sstream>
 #include <nlohmann/json.hpp>
 
+#include "methods/fallbacks.hpp"
 #include "test_support.hpp"
 
 using shadowlab::testing::source_path;
@@ -144,4 +145,20 @@ TEST(Cli, TextInspectionNamesTheStepsAndTheFallback) {
     EXPECT_NE(r.out.find("fallback: none"), std::string::npos);
     EXPECT_NE(r.out.find("Scene bounds"), std::string::npos);
     EXPECT_NE(r.out.find("world_to_uvz"), std::string::npos);
+}
+
+TEST(Cli, EveryMethodOnEveryHardCaseGivesAMapOrANamedFallback) {
+    for (const char* scene : {"default", "light_parallel_behind", "light_parallel_front", "casters_behind",
+                              "light_overhead", "far_near_1e5"})
+        for (const char* method : {"uniform", "focused", "psm", "lispsm", "tsm", "xpsm"}) {
+            const CliResult r = run_cli("inspect " + source_path(std::string("data/scenes/") + scene + ".json") +
+                                        " --json --method " + method);
+            ASSERT_EQ(r.exit_code, 0) << scene << " " << method << ": " << r.err;
+            const nlohmann::json j = nlohmann::json::parse(r.out);
+            EXPECT_GE(j["steps"].size(), 5u) << scene << " " << method;
+            if (!j["fallback"].is_null())
+                EXPECT_TRUE(shadowlab::fallback::is_named(j["fallback"].get<std::string>())) << j["fallback"];
+            for (const auto& row : j["maps"].at(0)["world_to_uvz"])
+                for (const auto& x : row) EXPECT_TRUE(x.is_number()) << scene << " " << method << ": not finite";
+        }
 }
