@@ -64,10 +64,11 @@ PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
     const double max_tan = std::tan(glm::radians(max_half_angle_deg));
 
     size_t behind = 0, outside_cone = 0;
+    const std::vector<glm::dvec3> light_points = transformed(points, fit.world_to_light);
     double far = 0.0;
-    for (const glm::dvec3& p : transformed(points, fit.world_to_light)) far = std::max(far, p.z);
+    for (const glm::dvec3& p : light_points) far = std::max(far, p.z);
     const double min_near = std::max(far, 1e-9) * 1e-6;  // keeps the depth mapping finite
-    for (const glm::dvec3& p : transformed(points, fit.world_to_light)) {
+    for (const glm::dvec3& p : light_points) {
         if (p.z <= min_near) { ++behind; continue; }
         glm::dvec2 t = glm::dvec2(p) / p.z;
         if (std::abs(t.x) > max_tan || std::abs(t.y) > max_tan) ++outside_cone;
