@@ -178,3 +178,21 @@ TEST(PerspectiveMethods, WarpsMoveTexelsTowardTheViewer) {
     EXPECT_NEAR(focused, 1.0, 1e-6);
     for (const char* method : {"psm", "lispsm", "xpsm"}) EXPECT_GT(near_over_far(method), 4.0 * focused) << method;
 }
+
+TEST(PerspectiveMethods, BiasScaleMovesAPointByTheBiasAlongTheLight) {
+    // (d_pre - z_bias_scale * b) / w must equal the depth of the point moved b toward the light:
+    // exactly for maps whose w is constant along light rays, at the visible region's centre for PSM.
+    const ShadowInputs in = scene_inputs("default");
+    for (const char* method : {"focused", "psm", "lispsm", "tsm", "xpsm"}) {
+        const Traced r = run(method, in);
+        const ShadowMap& map = r.setup.maps[0];
+        const Step* visible = r.trace.find("visible");
+        ASSERT_NE(visible, nullptr);
+        const glm::dvec3 p = std::get<ConvexPolyhedron>(visible->geometry[0].geometry).centroid();
+        const double b = 0.01;
+        const glm::dvec4 h = map.world_to_uvz * glm::dvec4(p, 1.0);
+        const double biased = (h.z - map.z_bias_scale * b) / h.w;
+        const double moved = world_to_uvz(map, p - b * in.light.direction).z;
+        EXPECT_NEAR(biased, moved, 1e-3 * std::abs(world_to_uvz(map, p).z - moved)) << method;
+    }
+}

@@ -56,6 +56,12 @@ ShadowMap orthographic_map(const glm::dmat4& world_to_light, const Aabb& light_b
     return map;
 }
 
+double depth_slope_along(const glm::dmat4& m, const glm::dvec3& direction, const glm::dvec3& at) {
+    const double a = glm::dot(glm::dvec3(row(m, 2)), direction), c = glm::dot(glm::dvec3(row(m, 3)), direction);
+    const glm::dvec4 h = m * glm::dvec4(at, 1.0);
+    return a - (h.z / h.w) * c;
+}
+
 PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
                                const std::vector<glm::dvec3>& points, double max_half_angle_deg) {
     PerspectiveFit fit;

@@ -37,6 +37,11 @@ glm::dmat4 box_to_unit_cube(const Aabb& light_box);
 // An orthographic map fit to `points` (world) in the given light space.
 ShadowMap orthographic_map(const glm::dmat4& world_to_light, const Aabb& light_box);
 
+// The pre-division depth change per world unit moved along `direction` at the point `at`, the
+// z_bias_scale of a map whose w changes along light rays (exact at `at`, first order elsewhere):
+// d(p + t L) = (d_pre + t a) / (w + t c) ≈ d + t (a - d c) / w, with a, c the rows' slopes along L.
+double depth_slope_along(const glm::dmat4& world_to_uvz, const glm::dvec3& direction, const glm::dvec3& at);
+
 // A perspective map from a spot or point light that covers `points` (world), at most
 // `max_half_angle_deg` off its axis. Named fallbacks: points behind the light, or wider than the
 // allowed cone (the map then covers only the cone).

@@ -117,6 +117,8 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
                 .value("inverted", inverted ? 1.0 : 0.0);
         });
     }
+    // Bias in world units along the light, exact at the centre of the visible region.
+    map.z_bias_scale = depth_slope_along(map.world_to_uvz, in.light.direction, body->visible.centroid());
     setup.maps.push_back(map);
     record_output(setup, points, trace);
     return setup;
