@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libassimp-dev
-  libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
 )

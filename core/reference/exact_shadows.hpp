@@ -1,0 +1,32 @@
+#pragma once
+// The ground truth shadow maps are measured against: for each camera pixel, the visible point and
+// whether it sees the light, by ray tracing the scene's triangles.
+#include <cstdint>
+#include <vector>
+#include <glm/glm.hpp>
+
+#include "scene/scene.hpp"
+#include "scene/tessellation.hpp"
+
+namespace shadowlab {
+
+// Per pixel, row-major with row 0 at the top of the image.
+struct ReferenceImage {
+    int width = 0, height = 0;
+    std::vector<glm::dvec3> position;  // the visible point; (0, 0, 0) where nothing is visible
+    std::vector<int> object;           // its object's index in Scene::objects; -1 where nothing is visible
+    std::vector<uint8_t> visible;      // the primary ray meets a triangle between near and far
+    std::vector<uint8_t> lit;          // visible, and no caster triangle lies between it and the light
+};
+
+// One primary ray through each pixel centre of the camera's projection (width x height pixels
+// spanning its full field of view), then a shadow ray from the visible point toward the light:
+// along -direction to infinity for a directional light, up to the position for spot and point
+// lights (the spot's cone is not applied). The shadow ray starts a small offset (1e-5 of the
+// scene's largest coordinate) off the surface, along the triangle's normal turned toward the
+// light, so that its own triangle never blocks it; a closed object still shadows its faces
+// turned from the light (the ray crosses the object), while a lone plane seen from its side away
+// from the light counts as lit: the test is occlusion, as a shadow map sees it, not shading.
+ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height);
+
+}  // namespace shadowlab

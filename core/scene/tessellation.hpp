@@ -1,0 +1,25 @@
+#pragma once
+// A scene as one triangle soup in world space, for the depth rasterizer and the ray-traced reference.
+#include <array>
+#include <vector>
+#include <glm/glm.hpp>
+
+#include "scene/scene.hpp"
+
+namespace shadowlab {
+
+struct WorldTriangles {
+    std::vector<glm::dvec3> vertices;
+    std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from outside
+    std::vector<int> object;                    // per triangle: its index in Scene::objects
+};
+
+// Every object through its model_matrix(): a box gives 12 triangles, a plane 2 (facing +y), a
+// sphere a UV sphere of `segments` slices and segments / 2 stacks, a cylinder `segments` side
+// quads and two fan caps, a mesh its own triangles (as wound in its file).
+WorldTriangles tessellate(const Scene& scene, int segments = 24);
+
+// Per object: does it cast shadows (SceneObject::casts)? Indexed like WorldTriangles::object.
+std::vector<bool> caster_flags(const Scene& scene);
+
+}  // namespace shadowlab
