@@ -1,10 +1,12 @@
 // shadowlab: the inspector's command line. Sub-commands run headless; with none, the default
 // scene is inspected (the GUI takes this place once the viewer lands).
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <CLI/CLI.hpp>
 
 #include "inspect_command.hpp"
+#include "measure_command.hpp"
 
 namespace {
 
@@ -41,8 +43,27 @@ int main(int argc, char** argv) {
     inspect_cmd->add_option("--set", set_pairs, "a method setting, key=value (repeatable)");
     inspect_cmd->add_flag("--json", inspect.json, "print one JSON object instead of text");
 
+    shadowlab::MeasureOptions measure;
+    std::vector<std::string> measure_pairs;
+    std::string size = "1280x720";
+    CLI::App* measure_cmd = app.add_subcommand("measure", "a method's error against the exact reference, and its cost");
+    measure_cmd->add_option("scene", measure.scene_file, "scene file (JSON)")->required();
+    measure_cmd->add_option("--method,-m", measure.method, "method name")->capture_default_str();
+    measure_cmd->add_option("--resolution,-r", measure.resolution, "shadow map resolution (texels per side)")->capture_default_str();
+    measure_cmd->add_option("--size", size, "camera image size WxH")->capture_default_str();
+    measure_cmd->add_option("--bias", measure.bias, "depth bias in world units (default: 2e-4 of the scene diagonal)");
+    measure_cmd->add_option("--set", measure_pairs, "a method setting, key=value (repeatable)");
+    measure_cmd->add_flag("--json", measure.json, "print one JSON object");
+
     try {
         app.parse(argc, argv);
+        if (app.got_subcommand(measure_cmd)) {
+            measure.settings = parse_settings(measure_pairs);
+            if (std::sscanf(size.c_str(), "%dx%d", &measure.width, &measure.height) != 2)
+                throw CLI::ValidationError("--size", "expected WxH, got '" + size + "'");
+            shadowlab::run_measure(measure);
+            return 0;
+        }
         if (app.got_subcommand(inspect_cmd)) {
             inspect.settings = parse_settings(set_pairs);
         } else {

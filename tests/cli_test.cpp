@@ -162,3 +162,31 @@ TEST(Cli, EveryMethodOnEveryHardCaseGivesAMapOrANamedFallback) {
                 for (const auto& x : row) EXPECT_TRUE(x.is_number()) << scene << " " << method << ": not finite";
         }
 }
+
+TEST(Cli, MeasurePrintsTheDocumentedObject) {
+    const CliResult r = run_cli("measure " + source_path("data/scenes/default.json") +
+                                " --method lispsm --resolution 1024 --size 320x180 --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["method"], "lispsm");
+    EXPECT_EQ(j["resolution"], 1024);
+    for (const char* share : {"misclassified", "false_shadow", "false_light"}) {
+        EXPECT_GE(j[share].get<double>(), 0.0) << share;
+        EXPECT_LE(j[share].get<double>(), 1.0) << share;
+    }
+    EXPECT_NEAR(j["misclassified"].get<double>(), j["false_shadow"].get<double>() + j["false_light"].get<double>(), 1e-12);
+    EXPECT_GT(j["m"]["max"].get<double>(), j["m"]["mean"].get<double>());
+    EXPECT_GT(j["setup_ms"].get<double>(), 0.0);
+    EXPECT_GT(j["raster_ms"].get<double>(), 0.0);
+    EXPECT_TRUE(j["fallback"].is_null());
+    EXPECT_NE(r.err.find("measure: exact reference"), std::string::npos) << "progress on stderr";
+}
+
+TEST(Cli, MeasureRejectsBadArguments) {
+    const std::string scene = source_path("data/scenes/default.json");
+    EXPECT_NE(run_cli("measure " + scene + " --resolution 0").exit_code, 0);
+    EXPECT_NE(run_cli("measure " + scene + " --size 12by7").exit_code, 0);
+    const CliResult r = run_cli("measure " + source_path("tests/data/bad/near_ge_far.json"));
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("camera.far"), std::string::npos) << r.err;
+}

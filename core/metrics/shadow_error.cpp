@@ -1,0 +1,96 @@
+#include "metrics/shadow_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, const glm::dvec2& uv_down,
+                              int resolution) {
+    const glm::dmat2 j(uv_right - uv, uv_down - uv);  // columns: per pixel right, per pixel down
+    // Smallest singular value of a 2x2 matrix from its Frobenius norm and determinant.
+    const double f = glm::dot(j[0], j[0]) + glm::dot(j[1], j[1]), det = std::abs(glm::determinant(j));
+    const double sigma_min = std::sqrt(std::max(0.0, (f - std::sqrt(std::max(0.0, f * f - 4 * det * det))) / 2));
+    return sigma_min > 0.0 ? 1.0 / (resolution * sigma_min) : INFINITY;
+}
+
+namespace {
+
+bool receives(const Scene& scene, const ReferenceImage& ref, size_t i) {
+    return ref.visible[i] && scene.objects[ref.object[i]].receives;
+}
+
+// The neighbour one pixel along (dx, dy), or the one on the other side when that is off the
+// object; its offset sign tells which was used. -1 when neither lies on the same object.
+long neighbour(const ReferenceImage& ref, int x, int y, int dx, int dy, double& sign) {
+    const size_t i = size_t(y) * ref.width + x;
+    for (int s : {1, -1}) {
+        const int nx = x + s * dx, ny = y + s * dy;
+        if (nx < 0 || ny < 0 || nx >= ref.width || ny >= ref.height) continue;
+        const size_t n = size_t(ny) * ref.width + nx;
+        if (ref.visible[n] && ref.object[n] == ref.object[i]) {
+            sign = s;
+            return long(n);
+        }
+    }
+    return -1;
+}
+
+double pixel_m(const ReferenceImage& ref, const ShadowMap& map, int resolution, int x, int y) {
+    double sx = 1, sy = 1;
+    const long right = neighbour(ref, x, y, 1, 0, sx), down = neighbour(ref, x, y, 0, 1, sy);
+    if (right < 0 || down < 0) return 0.0;
+    const glm::dvec3 uvz = world_to_uvz(map, ref.position[size_t(y) * ref.width + x]);
+    const glm::dvec2 uv(uvz);
+    if (!(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1)) return 0.0;  // off the map: lit, no texels
+    const glm::dvec2 du = sx * (glm::dvec2(world_to_uvz(map, ref.position[right])) - uv);
+    const glm::dvec2 dv = sy * (glm::dvec2(world_to_uvz(map, ref.position[down])) - uv);
+    const double m = texel_extent_in_pixels(uv, uv + du, uv + dv, resolution);
+    return std::isfinite(m) ? m : 0.0;
+}
+
+AliasingStats statistics(std::vector<double> values) {
+    AliasingStats s;
+    if (values.empty()) return s;
+    std::sort(values.begin(), values.end());
+    s.max = values.back();
+    for (double v : values) s.mean += v / double(values.size());
+    s.p95 = values[std::min(values.size() - 1, size_t(0.95 * double(values.size())))];
+    return s;
+}
+
+}  // namespace
+
+ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, const DepthMap& depth,
+                                 const ShadowMap& map, double bias) {
+    ShadowError e;
+    const size_t pixels = size_t(ref.width) * ref.height;
+    e.m_image.assign(pixels, 0.0f);
+    e.verdicts.assign(pixels, PixelVerdict::none);
+    size_t false_shadow = 0, false_light = 0;
+    std::vector<double> ms;
+    for (int y = 0; y < ref.height; ++y)
+        for (int x = 0; x < ref.width; ++x) {
+            const size_t i = size_t(y) * ref.width + x;
+            if (!receives(scene, ref, i)) continue;
+            ++e.receiver_pixels;
+            const bool shadowed = in_shadow(depth, map, ref.position[i], bias);
+            e.verdicts[i] = shadowed == !ref.lit[i] ? PixelVerdict::agree
+                            : shadowed             ? PixelVerdict::false_shadow
+                                                   : PixelVerdict::false_light;
+            false_shadow += e.verdicts[i] == PixelVerdict::false_shadow;
+            false_light += e.verdicts[i] == PixelVerdict::false_light;
+            if (const double m = pixel_m(ref, map, depth.resolution, x, y); m > 0.0) {
+                e.m_image[i] = float(m);
+                ms.push_back(m);
+            }
+        }
+    const double n = std::max<size_t>(e.receiver_pixels, 1);
+    e.false_shadow = false_shadow / n;
+    e.false_light = false_light / n;
+    e.misclassified = e.false_shadow + e.false_light;
+    e.m = statistics(std::move(ms));
+    return e;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,37 @@
+#pragma once
+// How wrong a shadow map is against the exact reference, pixel by pixel of the camera image.
+#include <cstdint>
+#include <vector>
+
+#include "methods/method.hpp"
+#include "raster/depth_map.hpp"
+#include "reference/exact_shadows.hpp"
+
+namespace shadowlab {
+
+enum class PixelVerdict : uint8_t { none, agree, false_shadow, false_light };
+
+struct AliasingStats {
+    double max = 0.0, mean = 0.0, p95 = 0.0;
+};
+
+struct ShadowError {
+    size_t receiver_pixels = 0;  // visible pixels of objects that receive shadows
+    // Shares of receiver pixels: false shadow (acne: the map shadows a lit point) and false light
+    // (leaks, peter panning: the map lights a shadowed point); misclassified is their sum.
+    double misclassified = 0.0, false_shadow = 0.0, false_light = 0.0;
+    // Lloyd's m: the longest extent of one map texel projected into the image, in pixels.
+    AliasingStats m;
+    std::vector<float> m_image;           // per pixel; 0 where not measured
+    std::vector<PixelVerdict> verdicts;   // per pixel
+};
+
+ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& reference, const DepthMap& depth,
+                                 const ShadowMap& map, double bias);
+
+// m at one pixel from the map coordinates of it and its neighbours one pixel right and down:
+// J = d(u, v)/d(pixel); a texel (1/N wide in u and v) spans 1 / (N σ_min(J)) pixels at most.
+double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, const glm::dvec2& uv_down,
+                              int resolution);
+
+}  // namespace shadowlab
