@@ -16,8 +16,12 @@ double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, 
 
 namespace {
 
+// Faces turned from the light (or edge-on to it) are dark by shading whatever a map says: only
+// pixels of receivers that face the light are judged.
+constexpr float kMinFacing = 1e-3f;
+
 bool receives(const Scene& scene, const ReferenceImage& ref, size_t i) {
-    return ref.visible[i] && scene.objects[ref.object[i]].receives;
+    return ref.visible[i] && scene.objects[ref.object[i]].receives && ref.facing[i] > kMinFacing;
 }
 
 // The neighbour one pixel along (dx, dy), or the one on the other side when that is off the

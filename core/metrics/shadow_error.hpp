@@ -16,7 +16,7 @@ struct AliasingStats {
 };
 
 struct ShadowError {
-    size_t receiver_pixels = 0;  // visible pixels of objects that receive shadows
+    size_t receiver_pixels = 0;  // visible pixels of objects that receive shadows, on faces turned to the light
     // Shares of receiver pixels: false shadow (acne: the map shadows a lit point) and false light
     // (leaks, peter panning: the map lights a shadowed point); misclassified is their sum.
     double misclassified = 0.0, false_shadow = 0.0, false_light = 0.0;

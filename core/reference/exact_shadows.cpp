@@ -151,6 +151,15 @@ bool sees_light(const Tracer& tracer, const Light& light, const std::array<glm::
     return !tracer.blocked(origin, light.position - origin, 1.0);  // t = 1 at the light
 }
 
+// cos of the angle between the light and the normal of the triangle's side seen from `eye`.
+double facing_light(const Light& light, const std::array<glm::dvec3, 3>& triangle, const glm::dvec3& p,
+                    const glm::dvec3& eye) {
+    glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
+    if (glm::dot(normal, eye - p) < 0.0) normal = -normal;
+    const glm::dvec3 to_light = light.is_directional() ? -light.direction : light.position - p;
+    return glm::dot(normal, glm::normalize(to_light));
+}
+
 }  // namespace
 
 ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height) {
@@ -162,7 +171,8 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
 
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     ReferenceImage image{width, height, std::vector<glm::dvec3>(pixels), std::vector<int>(pixels, -1),
-                         std::vector<uint8_t>(pixels, 0), std::vector<uint8_t>(pixels, 0)};
+                         std::vector<uint8_t>(pixels, 0), std::vector<uint8_t>(pixels, 0),
+                         std::vector<float>(pixels, 0.0f)};
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const glm::dvec3 direction = view_to_world * pixel_direction(projection, x, y, width, height);
@@ -175,6 +185,7 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
             image.object[i] = triangles.object[hit->triangle];
             image.visible[i] = 1;
             image.lit[i] = sees_light(tracer, scene.light, triangle, p, offset);
+            image.facing[i] = float(facing_light(scene.light, triangle, p, camera.position));
         }
     return image;
 }

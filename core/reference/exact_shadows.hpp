@@ -17,6 +17,7 @@ struct ReferenceImage {
     std::vector<int> object;           // its object's index in Scene::objects; -1 where nothing is visible
     std::vector<uint8_t> visible;      // the primary ray meets a triangle between near and far
     std::vector<uint8_t> lit;          // visible, and no caster triangle lies between it and the light
+    std::vector<float> facing;         // cos of the angle between the seen side's normal and the light: <= 0 in its own shade
 };
 
 // One primary ray through each pixel centre of the camera's projection (width x height pixels
