@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <embree3/rtcore.h>
 
 namespace shadowlab {
@@ -173,7 +174,7 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
     ReferenceImage image{width, height, std::vector<glm::dvec3>(pixels), std::vector<int>(pixels, -1),
                          std::vector<uint8_t>(pixels, 0), std::vector<uint8_t>(pixels, 0),
                          std::vector<float>(pixels, 0.0f)};
-    for (int y = 0; y < height; ++y)
+    auto trace_row = [&](int y) {
         for (int x = 0; x < width; ++x) {
             const glm::dvec3 direction = view_to_world * pixel_direction(projection, x, y, width, height);
             const std::optional<Hit> hit = tracer.first_hit(camera.position, direction, camera.near, camera.far);
@@ -187,6 +188,16 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
             image.lit[i] = sees_light(tracer, scene.light, triangle, p, offset);
             image.facing[i] = float(facing_light(scene.light, triangle, p, camera.position));
         }
+    };
+    // Rows interleaved over the cores: each pixel is independent, so the image does not depend on
+    // how many threads traced it.
+    const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> workers;
+    for (int t = 0; t < threads; ++t)
+        workers.emplace_back([&, t] {
+            for (int y = t; y < height; y += threads) trace_row(y);
+        });
+    for (std::thread& w : workers) w.join();
     return image;
 }
 
