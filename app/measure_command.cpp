@@ -1,102 +1,82 @@
 #include "measure_command.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <stdexcept>
 
 #include "io/inspection_json.hpp"
-#include "metrics/shadow_error.hpp"
+#include "metrics/measurement.hpp"
 #include "scene/scene_loader.hpp"
-#include "scene/tessellation.hpp"
 
 namespace shadowlab {
+
+Json to_json(const Measurement& m) {
+    const ShadowError& e = m.error;
+    return {{"method", m.method},
+            {"resolution", m.resolution},
+            {"misclassified", e.misclassified},
+            {"false_shadow", e.false_shadow},
+            {"false_light", e.false_light},
+            {"m", {{"max", e.m.max}, {"mean", e.m.mean}, {"p95", e.m.p95}}},
+            {"setup_ms", m.setup_ms},
+            {"raster_ms", m.raster_ms},
+            {"fallback", m.fallback ? Json(*m.fallback) : Json(nullptr)},
+            {"bias", m.bias},
+            {"receiver_pixels", e.receiver_pixels}};
+}
+
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// Long work says what it is doing on stderr, so that stdout stays the result.
-template <class Work>
-auto step(const char* what, Work&& work) {
-    std::cerr << "measure: " << what << "..." << std::flush;
-    const Clock::time_point start = Clock::now();
-    auto result = work();
-    std::cerr << " " << ms_since(start) << " ms\n";
-    return result;
-}
-
-// The fastest of a few runs: a setup takes microseconds and this machine is noisy.
-double setup_ms(const Method& method, const Scene& scene, const std::vector<ObjectBox>& boxes, const Settings& settings) {
-    double best = INFINITY;
-    for (int run = 0; run < 5; ++run) {
-        const Clock::time_point start = Clock::now();
-        const ShadowSetup setup = method.compute(gather_inputs(scene.camera, scene.light, boxes), settings, nullptr);
-        best = std::min(best, ms_since(start));
-        (void)setup;
-    }
-    return best;
-}
-
-void print(const MeasureOptions& o, const ShadowSetup& setup, const ShadowError& e, double setup_time, double raster_time,
-           double bias) {
-    Json j{{"method", o.method},
-           {"resolution", o.resolution},
-           {"misclassified", e.misclassified},
-           {"false_shadow", e.false_shadow},
-           {"false_light", e.false_light},
-           {"m", {{"max", e.m.max}, {"mean", e.m.mean}, {"p95", e.m.p95}}},
-           {"setup_ms", setup_time},
-           {"raster_ms", raster_time},
-           {"fallback", setup.fallback ? Json(*setup.fallback) : Json(nullptr)},
-           {"bias", bias},
-           {"receiver_pixels", e.receiver_pixels}};
-    if (o.json) {
-        std::cout << j.dump(1) << "\n";
-        return;
-    }
-    std::cout << "method " << o.method << " at " << o.resolution << "^2, image " << o.width << "x" << o.height
-              << ", bias " << bias << "\n"
+void print_text(const MeasureOptions& o, const Measurement& m) {
+    const ShadowError& e = m.error;
+    std::cout << "method " << m.method << " at " << m.resolution << "^2, image " << o.width << "x" << o.height
+              << ", bias " << m.bias << "\n"
               << "  misclassified " << 100 * e.misclassified << "% of " << e.receiver_pixels
               << " receiver pixels (false shadow " << 100 * e.false_shadow << "%, false light " << 100 * e.false_light
               << "%)\n"
               << "  m (texel extent in pixels): max " << e.m.max << ", mean " << e.m.mean << ", p95 " << e.m.p95 << "\n"
-              << "  cost: setup " << setup_time << " ms, raster " << raster_time << " ms, total "
-              << setup_time + raster_time << " ms\n"
-              << "  fallback: " << setup.fallback.value_or("none") << "\n";
+              << "  cost: setup " << m.setup_ms << " ms, raster " << m.raster_ms << " ms, total "
+              << m.setup_ms + m.raster_ms << " ms\n"
+              << "  fallback: " << m.fallback.value_or("none") << "\n";
 }
 
 }  // namespace
 
-void run_measure(const MeasureOptions& o) {
-    const Method* method = find_method(o.method);
-    if (!method) throw std::invalid_argument("unknown method '" + o.method + "'");
-    if (o.resolution < 1 || o.resolution > 16384) throw std::invalid_argument("--resolution: expected 1 to 16384");
-    if (o.width < 1 || o.height < 1) throw std::invalid_argument("--size: expected positive WxH");
-    const Settings settings = resolve_settings(method->name, method->settings, o.settings);
-    const Scene scene = load_scene(o.scene_file);
-    const std::vector<ObjectBox> boxes = object_boxes(scene);
-    const ShadowInputs inputs = gather_inputs(scene.camera, scene.light, boxes);
-    const double bias = o.bias >= 0.0 ? o.bias : 2e-4 * inputs.scene_bounds.diagonal();
+const Method& method_named(const std::string& name) {
+    if (const Method* m = find_method(name)) return *m;
+    std::string known;
+    for (const Method& m : all_methods()) known += " " + m.name;
+    throw std::invalid_argument("unknown method '" + name + "' (known:" + known + ")");
+}
 
-    const WorldTriangles triangles = tessellate(scene);
-    const ReferenceImage reference = step("exact reference (Embree rays)", [&] {
-        return exact_reference(scene, triangles, o.width, o.height);
-    });
-    const ShadowSetup setup = method->compute(inputs, settings, nullptr);
-    const double setup_time = setup_ms(*method, scene, boxes, settings);
-    const Clock::time_point raster_start = Clock::now();
-    const DepthMap depth = step("rasterizing the map", [&] {
-        return rasterize_depth(triangles, caster_flags(scene), setup.maps.at(0), o.resolution);
-    });
-    const double raster_time = ms_since(raster_start);
-    const ShadowError error = step("comparing", [&] {
-        return measure_shadow_error(scene, reference, depth, setup.maps.at(0), bias);
-    });
-    print(o, setup, error, setup_time, raster_time, bias);
+MeasureContext prepare_with_progress(const std::string& scene_file, int width, int height) {
+    if (width < 1 || height < 1) throw std::invalid_argument("--size: expected positive WxH");
+    const Scene scene = load_scene(scene_file);
+    std::cerr << "measure: exact reference of " << scene_file << " (" << width << "x" << height << ", Embree rays)..."
+              << std::flush;
+    const auto start = std::chrono::steady_clock::now();
+    MeasureContext context = prepare_measurement(scene, width, height);
+    std::cerr << " " << std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()
+              << " ms\n";
+    return context;
+}
+
+void check_resolution(int resolution) {
+    if (resolution < 1 || resolution > 16384)
+        throw std::invalid_argument("--resolution: expected 1 to 16384, got " + std::to_string(resolution));
+}
+
+void run_measure(const MeasureOptions& o) {
+    const Method& method = method_named(o.method);
+    check_resolution(o.resolution);
+    const Settings settings = resolve_settings(method.name, method.settings, o.settings);
+    const MeasureContext context = prepare_with_progress(o.scene_file, o.width, o.height);
+    std::cerr << "measure: " << method.name << " at " << o.resolution << "^2...\n";
+    const Measurement m = measure_method(context, method, settings, o.resolution, o.bias);
+    if (o.json)
+        std::cout << to_json(m).dump(1) << "\n";
+    else
+        print_text(o, m);
 }
 
 }  // namespace shadowlab

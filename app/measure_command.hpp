@@ -3,6 +3,9 @@
 #include <map>
 #include <string>
 
+#include "io/inspection_json.hpp"
+#include "metrics/measurement.hpp"
+
 namespace shadowlab {
 
 struct MeasureOptions {
@@ -17,5 +20,11 @@ struct MeasureOptions {
 
 // Prints the metrics to stdout and progress to stderr; throws on bad input.
 void run_measure(const MeasureOptions& options);
+
+// Shared with `bench` and `sweep`.
+Json to_json(const Measurement& measurement);
+const Method& method_named(const std::string& name);
+MeasureContext prepare_with_progress(const std::string& scene_file, int width, int height);
+void check_resolution(int resolution);
 
 }  // namespace shadowlab
