@@ -5,8 +5,10 @@
 #include <iostream>
 #include <CLI/CLI.hpp>
 
+#include "bench_command.hpp"
 #include "inspect_command.hpp"
 #include "measure_command.hpp"
+#include "sweep_command.hpp"
 
 namespace {
 
@@ -27,6 +29,13 @@ std::map<std::string, std::string> parse_settings(const std::vector<std::string>
         out[pair.substr(0, eq)] = pair.substr(eq + 1);
     }
     return out;
+}
+
+// "WxH" into two numbers; throws CLI::ValidationError otherwise.
+void parse_size(const std::string& text, int& width, int& height) {
+    char end = 0;
+    if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &end) != 2)
+        throw CLI::ValidationError("--size", "expected WxH, got '" + text + "'");
 }
 
 }  // namespace
@@ -55,12 +64,39 @@ int main(int argc, char** argv) {
     measure_cmd->add_option("--set", measure_pairs, "a method setting, key=value (repeatable)");
     measure_cmd->add_flag("--json", measure.json, "print one JSON object");
 
+    shadowlab::BenchOptions bench;
+    std::string bench_size = "640x360";
+    CLI::App* bench_cmd = app.add_subcommand("bench", "every method at every resolution: a CSV and a plot of error against cost");
+    bench_cmd->add_option("scenes", bench.scene_files, "scene files (JSON)")->required();
+    bench_cmd->add_option("--methods", bench.methods, "methods, comma-separated (default: all)")->delimiter(',');
+    bench_cmd->add_option("--resolutions", bench.resolutions, "map resolutions, comma-separated")->delimiter(',')->capture_default_str();
+    bench_cmd->add_option("--size", bench_size, "camera image size WxH")->capture_default_str();
+    bench_cmd->add_option("--out", bench.out_dir, "output directory")->required();
+
+    shadowlab::SweepOptions sweep;
+    std::string sweep_size = "480x270";
+    CLI::App* sweep_cmd = app.add_subcommand("sweep", "light from perpendicular to parallel with the view, and far/near from 10 to 1e7");
+    sweep_cmd->add_option("scene", sweep.scene_file, "scene file (JSON)")->required();
+    sweep_cmd->add_option("--methods", sweep.methods, "methods, comma-separated (default: all)")->delimiter(',');
+    sweep_cmd->add_option("--resolution,-r", sweep.resolution, "map resolution")->capture_default_str();
+    sweep_cmd->add_option("--size", sweep_size, "camera image size WxH")->capture_default_str();
+    sweep_cmd->add_option("--out", sweep.out_dir, "output directory")->required();
+
     try {
         app.parse(argc, argv);
+        if (app.got_subcommand(sweep_cmd)) {
+            parse_size(sweep_size, sweep.width, sweep.height);
+            shadowlab::run_sweep(sweep);
+            return 0;
+        }
+        if (app.got_subcommand(bench_cmd)) {
+            parse_size(bench_size, bench.width, bench.height);
+            shadowlab::run_bench(bench);
+            return 0;
+        }
         if (app.got_subcommand(measure_cmd)) {
             measure.settings = parse_settings(measure_pairs);
-            if (std::sscanf(size.c_str(), "%dx%d", &measure.width, &measure.height) != 2)
-                throw CLI::ValidationError("--size", "expected WxH, got '" + size + "'");
+            parse_size(size, measure.width, measure.height);
             shadowlab::run_measure(measure);
             return 0;
         }

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -189,4 +190,49 @@ TEST(Cli, MeasureRejectsBadArguments) {
     const CliResult r = run_cli("measure " + source_path("tests/data/bad/near_ge_far.json"));
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("camera.far"), std::string::npos) << r.err;
+}
+
+namespace {
+
+std::vector<std::string> lines_of(const std::string& file) {
+    std::istringstream in(slurp(file));
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+bool is_png(const std::string& file) { return slurp(file).rfind("\x89PNG", 0) == 0; }
+
+}  // namespace
+
+TEST(Cli, BenchWritesItsCsvAndPlot) {
+    const std::string out = ::testing::TempDir() + "shadowlab_bench";
+    std::filesystem::remove_all(out);
+    const CliResult r = run_cli("bench " + source_path("data/scenes/box_on_plane.json") +
+                                " --methods uniform,focused --resolutions 16,512 --size 160x90 --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> csv = lines_of(out + "/bench.csv");
+    ASSERT_EQ(csv.size(), 5u);  // header + 2 methods x 2 resolutions
+    EXPECT_EQ(csv[0].rfind("scene,method,resolution,misclassified", 0), 0u);
+    EXPECT_NE(csv[1].find(",uniform,16,"), std::string::npos);
+    EXPECT_NE(csv[4].find(",focused,512,"), std::string::npos);
+    EXPECT_TRUE(is_png(out + "/bench.png"));
+    EXPECT_NE(r.err.find("bench: [4/4]"), std::string::npos) << "progress: " << r.err;
+}
+
+TEST(Cli, SweepMarksXpsmsMinersLampAsTheLightTurnsParallel) {
+    const std::string out = ::testing::TempDir() + "shadowlab_sweep";
+    std::filesystem::remove_all(out);
+    const CliResult r = run_cli("sweep " + source_path("data/scenes/box_on_plane.json") +
+                                " --methods focused,xpsm --resolution 256 --size 96x54 --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> csv = lines_of(out + "/sweep.csv");
+    ASSERT_EQ(csv.size(), 1u + (11 + 7) * 2);
+    int lamps = 0;
+    for (const std::string& line : csv)
+        if (line.rfind("angle_deg,", 0) == 0 && line.find(",xpsm,") != std::string::npos)
+            lamps += line.find("miner's lamp") != std::string::npos;
+    EXPECT_GE(lamps, 5) << "γ of 3° and less is XPSM's miner's lamp";
+    EXPECT_TRUE(is_png(out + "/sweep_angle.png"));
+    EXPECT_TRUE(is_png(out + "/sweep_far_near.png"));
 }

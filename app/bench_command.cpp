@@ -1,0 +1,88 @@
+#include "bench_command.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include "measure_command.hpp"
+#include "plot/chart_png.hpp"
+
+namespace shadowlab {
+namespace {
+
+std::string csv_field(const std::string& text) {
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+void write_csv_row(std::ofstream& csv, const std::string& scene, const Measurement& m) {
+    const ShadowError& e = m.error;
+    csv << csv_field(scene) << ',' << m.method << ',' << m.resolution << ',' << e.misclassified << ','
+        << e.false_shadow << ',' << e.false_light << ',' << e.m.max << ',' << e.m.mean << ',' << e.m.p95 << ','
+        << m.setup_ms << ',' << m.raster_ms << ',' << m.setup_ms + m.raster_ms << ','
+        << csv_field(m.fallback.value_or("")) << '\n';
+}
+
+// One line per method (and scene): misclassified share against total cost, one point per resolution.
+ChartSpec error_against_cost(const std::vector<std::pair<std::string, std::vector<Measurement>>>& runs) {
+    ChartSpec chart{"Speed-accuracy trade: error against cost", "cost per frame: setup + rasterization (ms)",
+                    "misclassified receiver pixels (%)", true, false, 900, 600, {}};
+    for (const auto& [name, measurements] : runs) {
+        ChartSeries series;
+        series.name = name;
+        for (const Measurement& m : measurements) {
+            series.x.push_back(m.setup_ms + m.raster_ms);
+            series.y.push_back(100.0 * m.error.misclassified);
+            series.labels.push_back(std::to_string(m.resolution));
+            series.marked.push_back(m.fallback.has_value());
+        }
+        chart.series.push_back(std::move(series));
+    }
+    return chart;
+}
+
+}  // namespace
+
+void run_bench(const BenchOptions& o) {
+    if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
+    std::vector<const Method*> methods;
+    for (const std::string& name : o.methods) methods.push_back(&method_named(name));
+    if (methods.empty())
+        for (const Method& m : all_methods()) methods.push_back(&m);
+    for (int r : o.resolutions) check_resolution(r);
+    std::filesystem::create_directories(o.out_dir);
+    const std::string csv_path = (std::filesystem::path(o.out_dir) / "bench.csv").string();
+    std::ofstream csv(csv_path);
+    if (!csv) throw std::runtime_error(csv_path + ": cannot write");
+    csv << "scene,method,resolution,misclassified,false_shadow,false_light,m_max,m_mean,m_p95,setup_ms,raster_ms,"
+           "total_ms,fallback\n";
+
+    std::vector<std::pair<std::string, std::vector<Measurement>>> runs;
+    const size_t total = o.scene_files.size() * methods.size() * o.resolutions.size();
+    size_t done = 0;
+    for (const std::string& scene_file : o.scene_files) {
+        const MeasureContext context = prepare_with_progress(scene_file, o.width, o.height);
+        const std::string scene_name = std::filesystem::path(scene_file).stem().string();
+        for (const Method* method : methods) {
+            const Settings settings = resolve_settings(method->name, method->settings, {});
+            auto& series = runs.emplace_back(o.scene_files.size() > 1 ? method->name + " (" + scene_name + ")"
+                                                                      : method->name,
+                                             std::vector<Measurement>{});
+            for (int resolution : o.resolutions) {
+                std::cerr << "bench: [" << ++done << "/" << total << "] " << scene_name << " " << method->name << " "
+                          << resolution << "^2\n";
+                series.second.push_back(measure_method(context, *method, settings, resolution, -1.0));
+                write_csv_row(csv, scene_name, series.second.back());
+            }
+        }
+    }
+    csv.close();
+    std::cout << "wrote " << csv_path << "\n";
+    const std::string png_path = (std::filesystem::path(o.out_dir) / "bench.png").string();
+    write_chart_png(error_against_cost(runs), png_path);
+    std::cout << "wrote " << png_path << "\n";
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,20 @@
+#pragma once
+// `shadowlab bench SCENE... [--methods a,b] [--resolutions 256,512,...] [--size WxH] --out DIR`:
+// every method at every resolution on every scene; DIR/bench.csv and DIR/bench.png (error against
+// cost, one line per method).
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+struct BenchOptions {
+    std::vector<std::string> scene_files;
+    std::vector<std::string> methods;  // empty: all
+    std::vector<int> resolutions{256, 512, 1024, 2048, 4096};
+    int width = 640, height = 360;
+    std::string out_dir;
+};
+
+void run_bench(const BenchOptions& options);
+
+}  // namespace shadowlab

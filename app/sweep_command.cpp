@@ -1,0 +1,103 @@
+#include "sweep_command.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include "measure_command.hpp"
+#include "plot/chart_png.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace shadowlab {
+namespace {
+
+const std::vector<double> kAnglesDeg{90, 60, 30, 10, 3, 1, 0.3, 0.1, 0.01, 1e-3, 1e-4};
+const std::vector<double> kFarOverNear{10, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7};
+
+// The light at γ from the view direction, tilted toward the ground (from above the viewer).
+Scene with_light_angle(Scene scene, double gamma_deg) {
+    const glm::dvec3 v = scene.camera.view_direction();
+    glm::dvec3 down = glm::dvec3(0, -1, 0) - glm::dot(glm::dvec3(0, -1, 0), v) * v;
+    if (glm::length(down) < 1e-9) down = glm::cross(v, glm::dvec3(1, 0, 0));
+    const double g = glm::radians(gamma_deg);
+    scene.light.type = LightType::directional;
+    scene.light.direction = glm::normalize(std::cos(g) * v + std::sin(g) * glm::normalize(down));
+    return scene;
+}
+
+Scene with_far_over_near(Scene scene, double ratio) {
+    scene.camera.far = scene.camera.near * ratio;
+    return scene;
+}
+
+struct SweepSeries {
+    std::string quantity;  // "angle_deg" or "far_over_near"
+    std::vector<double> values;
+    std::vector<std::vector<Measurement>> per_method;  // [method][value]
+};
+
+ChartSpec error_against(const SweepSeries& sweep, const std::vector<const Method*>& methods, const std::string& title,
+                        const std::string& x_title) {
+    ChartSpec chart{title, x_title, "misclassified receiver pixels (%)   (x: a fallback was taken)", true, false,
+                    900, 600, {}};
+    for (size_t k = 0; k < methods.size(); ++k) {
+        ChartSeries series;
+        series.name = methods[k]->name;
+        for (size_t i = 0; i < sweep.values.size(); ++i) {
+            const Measurement& m = sweep.per_method[k][i];
+            series.x.push_back(sweep.values[i]);
+            series.y.push_back(100.0 * m.error.misclassified);
+            series.marked.push_back(m.fallback.has_value());
+        }
+        chart.series.push_back(std::move(series));
+    }
+    return chart;
+}
+
+}  // namespace
+
+void run_sweep(const SweepOptions& o) {
+    if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
+    check_resolution(o.resolution);
+    std::vector<const Method*> methods;
+    for (const std::string& name : o.methods) methods.push_back(&method_named(name));
+    if (methods.empty())
+        for (const Method& m : all_methods()) methods.push_back(&m);
+    const Scene base = load_scene(o.scene_file);
+    std::filesystem::create_directories(o.out_dir);
+    const std::filesystem::path dir(o.out_dir);
+    std::ofstream csv(dir / "sweep.csv");
+    if (!csv) throw std::runtime_error((dir / "sweep.csv").string() + ": cannot write");
+    csv << "quantity,value,method,misclassified,false_shadow,false_light,m_mean,m_p95,fallback\n";
+
+    auto sweep = [&](const std::string& quantity, const std::vector<double>& values, auto scene_at) {
+        SweepSeries s{quantity, values, std::vector<std::vector<Measurement>>(methods.size())};
+        for (size_t i = 0; i < values.size(); ++i) {
+            std::cerr << "sweep: " << quantity << " = " << values[i] << " [" << i + 1 << "/" << values.size() << "]\n";
+            const MeasureContext context = prepare_measurement(scene_at(values[i]), o.width, o.height);
+            for (size_t k = 0; k < methods.size(); ++k) {
+                const Settings settings = resolve_settings(methods[k]->name, methods[k]->settings, {});
+                const Measurement m = measure_method(context, *methods[k], settings, o.resolution, -1.0);
+                csv << quantity << ',' << values[i] << ',' << m.method << ',' << m.error.misclassified << ','
+                    << m.error.false_shadow << ',' << m.error.false_light << ',' << m.error.m.mean << ','
+                    << m.error.m.p95 << ",\"" << m.fallback.value_or("") << "\"\n";
+                s.per_method[k].push_back(m);
+            }
+        }
+        return s;
+    };
+    const SweepSeries angles = sweep("angle_deg", kAnglesDeg, [&](double g) { return with_light_angle(base, g); });
+    const SweepSeries ratios = sweep("far_over_near", kFarOverNear, [&](double r) { return with_far_over_near(base, r); });
+    csv.close();
+    std::cout << "wrote " << (dir / "sweep.csv").string() << "\n";
+    write_chart_png(error_against(angles, methods, "Error as the light turns parallel to the view",
+                                  "angle γ between light and view (degrees)"),
+                    (dir / "sweep_angle.png").string());
+    write_chart_png(error_against(ratios, methods, "Error against far/near", "far / near"),
+                    (dir / "sweep_far_near.png").string());
+    std::cout << "wrote " << (dir / "sweep_angle.png").string() << " and " << (dir / "sweep_far_near.png").string() << "\n";
+}
+
+}  // namespace shadowlab
