@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include "methods/fallbacks.hpp"
@@ -30,7 +31,8 @@ std::string slurp(const std::string& file) {
 }
 
 CliResult run_cli(const std::string& args) {
-    const std::string err_file = ::testing::TempDir() + "shadowlab_cli_stderr.txt";
+    // One file per process: ctest runs the CLI tests in parallel.
+    const std::string err_file = ::testing::TempDir() + "shadowlab_cli_stderr_" + std::to_string(getpid()) + ".txt";
     const std::string command = std::string(SHADOWLAB_CLI) + " " + args + " 2>" + err_file;
     FILE* pipe = popen(command.c_str(), "r");
     std::string out;
