@@ -18,6 +18,7 @@ Json to_json(const Measurement& m) {
             {"false_shadow", e.false_shadow},
             {"false_light", e.false_light},
             {"m", {{"max", e.m.max}, {"mean", e.m.mean}, {"p95", e.m.p95}}},
+            {"depth_step", {{"max", e.depth_step.max}, {"mean", e.depth_step.mean}, {"p95", e.depth_step.p95}}},
             {"setup_ms", m.setup_ms},
             {"raster_ms", m.raster_ms},
             {"fallback", m.fallback ? Json(*m.fallback) : Json(nullptr)},
@@ -35,6 +36,8 @@ void print_text(const MeasureOptions& o, const Measurement& m) {
               << " receiver pixels (false shadow " << 100 * e.false_shadow << "%, false light " << 100 * e.false_light
               << "%)\n"
               << "  m (texel extent in pixels): max " << e.m.max << ", mean " << e.m.mean << ", p95 " << e.m.p95 << "\n"
+              << "  depth step of a 24-bit map (world units): max " << e.depth_step.max << ", mean "
+              << e.depth_step.mean << ", p95 " << e.depth_step.p95 << "\n"
               << "  cost: setup " << m.setup_ms << " ms, raster " << m.raster_ms << " ms, total "
               << m.setup_ms + m.raster_ms << " ms\n"
               << "  fallback: " << m.fallback.value_or("none") << "\n";

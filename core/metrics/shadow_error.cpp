@@ -14,7 +14,18 @@ double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, 
     return sigma_min > 0.0 ? 1.0 / (resolution * sigma_min) : INFINITY;
 }
 
+double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
+    const glm::dmat4& m = map.world_to_uvz;
+    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+    const double a = glm::dot(glm::dvec3(m[0][2], m[1][2], m[2][2]), l);  // d_pre's slope along l
+    const double c = glm::dot(glm::dvec3(m[0][3], m[1][3], m[2][3]), l);  // w's slope along l
+    const double slope = (a * h.w - h.z * c) / (h.w * h.w);
+    return slope > 0.0 ? 1.0 / slope : INFINITY;
+}
+
 namespace {
+
+constexpr double kDepthBufferSteps = 16777216.0;  // a 24-bit depth buffer
 
 // Faces turned from the light (or edge-on to it) are dark by shading whatever a map says: only
 // pixels of receivers that face the light are judged.
@@ -72,7 +83,7 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
     e.m_image.assign(pixels, 0.0f);
     e.verdicts.assign(pixels, PixelVerdict::none);
     size_t false_shadow = 0, false_light = 0;
-    std::vector<double> ms;
+    std::vector<double> ms, depth_steps;
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
             const size_t i = size_t(y) * ref.width + x;
@@ -84,6 +95,11 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
                                                    : PixelVerdict::false_light;
             false_shadow += e.verdicts[i] == PixelVerdict::false_shadow;
             false_light += e.verdicts[i] == PixelVerdict::false_light;
+            const glm::dvec3 along = scene.light.is_directional() ? scene.light.direction
+                                                                 : glm::normalize(ref.position[i] - scene.light.position);
+            if (const double step = world_per_depth_unit(map, along, ref.position[i]) / kDepthBufferSteps;
+                std::isfinite(step))
+                depth_steps.push_back(step);
             if (const double m = pixel_m(ref, map, depth.resolution, x, y); m > 0.0) {
                 e.m_image[i] = float(m);
                 ms.push_back(m);
@@ -94,6 +110,7 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
     e.false_light = false_light / n;
     e.misclassified = e.false_shadow + e.false_light;
     e.m = statistics(std::move(ms));
+    e.depth_step = statistics(std::move(depth_steps));
     return e;
 }
 

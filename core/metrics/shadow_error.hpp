@@ -22,12 +22,18 @@ struct ShadowError {
     double misclassified = 0.0, false_shadow = 0.0, false_light = 0.0;
     // Lloyd's m: the longest extent of one map texel projected into the image, in pixels.
     AliasingStats m;
+    // Depth resolution: the world distance along the light that one step of a 24-bit depth buffer
+    // stands for at each judged pixel (max, mean, 95th percentile).
+    AliasingStats depth_step;
     std::vector<float> m_image;           // per pixel; 0 where not measured
     std::vector<PixelVerdict> verdicts;   // per pixel
 };
 
 ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& reference, const DepthMap& depth,
                                  const ShadowMap& map, double bias);
+
+// World units along the light per unit of stored depth at p: 1 / (d d / d t), d = d_pre / w.
+double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& light_direction, const glm::dvec3& p);
 
 // m at one pixel from the map coordinates of it and its neighbours one pixel right and down:
 // J = d(u, v)/d(pixel); a texel (1/N wide in u and v) spans 1 / (N σ_min(J)) pixels at most.
