@@ -1,0 +1,110 @@
+#include "reference/ray_tracer.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <embree3/rtcore.h>
+
+namespace shadowlab {
+namespace {
+
+using DevicePtr = std::unique_ptr<RTCDeviceTy, decltype(&rtcReleaseDevice)>;
+using ScenePtr = std::unique_ptr<RTCSceneTy, decltype(&rtcReleaseScene)>;
+
+void throw_if_error(RTCDevice device, const std::string& what) {
+    const RTCError error = rtcGetDeviceError(device);
+    if (error != RTC_ERROR_NONE)
+        throw std::runtime_error("Embree: " + what + " failed (RTCError " + std::to_string(error) + ")");
+}
+
+// One build thread: the BVH, hence which of two coincident triangles a ray meets, is the same on
+// every run.
+DevicePtr new_device() {
+    DevicePtr device(rtcNewDevice("threads=1"), &rtcReleaseDevice);
+    if (!device) throw_if_error(nullptr, "creating a device");
+    return device;
+}
+
+// A committed scene holding the chosen triangles; primitive i is chosen[i].
+ScenePtr build_scene(RTCDevice device, const WorldTriangles& triangles, const std::vector<int>& chosen) {
+    ScenePtr scene(rtcNewScene(device), &rtcReleaseScene);
+    rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);  // watertight triangle tests, robust traversal
+    if (!chosen.empty()) {
+        RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), triangles.vertices.size()));
+        for (std::size_t i = 0; i < triangles.vertices.size(); ++i)
+            for (int k = 0; k < 3; ++k) vertices[3 * i + k] = static_cast<float>(triangles.vertices[i][k]);
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), chosen.size()));
+        for (std::size_t i = 0; i < chosen.size(); ++i)
+            for (int k = 0; k < 3; ++k) indices[3 * i + k] = static_cast<unsigned>(triangles.triangles[chosen[i]][k]);
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(scene.get(), geometry);
+        rtcReleaseGeometry(geometry);
+    }
+    rtcCommitScene(scene.get());
+    throw_if_error(device, "building a BVH");
+    return scene;
+}
+
+// Indices of the triangles whose object passes `keep`.
+template <class Predicate>
+std::vector<int> triangles_where(const WorldTriangles& triangles, Predicate keep) {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < triangles.triangles.size(); ++i)
+        if (keep(triangles.object[i])) out.push_back(static_cast<int>(i));
+    return out;
+}
+
+RTCRay make_ray(const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max) {
+    RTCRay ray{};
+    ray.org_x = static_cast<float>(origin.x);
+    ray.org_y = static_cast<float>(origin.y);
+    ray.org_z = static_cast<float>(origin.z);
+    ray.dir_x = static_cast<float>(direction.x);
+    ray.dir_y = static_cast<float>(direction.y);
+    ray.dir_z = static_cast<float>(direction.z);
+    ray.tnear = static_cast<float>(t_min);
+    ray.tfar = static_cast<float>(t_max);
+    ray.mask = ~0u;  // this Embree build tests ray masks: a zero mask would meet nothing
+    return ray;
+}
+
+}  // namespace
+
+struct RayTracer::Bvhs {
+    DevicePtr device;
+    ScenePtr all, casters;
+};
+
+RayTracer::RayTracer(const WorldTriangles& triangles, const std::vector<bool>& casts) {
+    DevicePtr device = new_device();
+    ScenePtr all = build_scene(device.get(), triangles, triangles_where(triangles, [](int) { return true; }));
+    ScenePtr casters = build_scene(device.get(), triangles,
+                                   triangles_where(triangles, [&](int object) { return bool(casts.at(object)); }));
+    bvhs_.reset(new Bvhs{std::move(device), std::move(all), std::move(casters)});
+}
+
+RayTracer::~RayTracer() = default;
+
+std::optional<Hit> RayTracer::first_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
+                                        double t_max) const {
+    RTCRayHit query{};
+    query.ray = make_ray(origin, direction, t_min, t_max);
+    query.hit.geomID = query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcIntersect1(bvhs_->all.get(), &context, &query);
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return Hit{static_cast<int>(query.hit.primID), query.hit.u, query.hit.v};
+}
+
+bool RayTracer::blocked(const glm::dvec3& origin, const glm::dvec3& direction, double t_max) const {
+    RTCRay ray = make_ray(origin, direction, 0.0, t_max);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcOccluded1(bvhs_->casters.get(), &context, &ray);
+    return ray.tfar < 0.0f;  // Embree marks an occluded ray with tfar = -inf
+}
+
+}  // namespace shadowlab
