@@ -47,10 +47,7 @@ ChartSpec error_against_cost(const std::vector<std::pair<std::string, std::vecto
 
 void run_bench(const BenchOptions& o) {
     if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
-    std::vector<const Method*> methods;
-    for (const std::string& name : o.methods) methods.push_back(&method_named(name));
-    if (methods.empty())
-        for (const Method& m : all_methods()) methods.push_back(&m);
+    const std::vector<const Method*> methods = methods_named(o.methods);
     for (int r : o.resolutions) check_resolution(r);
     std::filesystem::create_directories(o.out_dir);
     const std::string csv_path = (std::filesystem::path(o.out_dir) / "bench.csv").string();

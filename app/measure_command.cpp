@@ -52,6 +52,14 @@ const Method& method_named(const std::string& name) {
     throw std::invalid_argument("unknown method '" + name + "' (known:" + known + ")");
 }
 
+std::vector<const Method*> methods_named(const std::vector<std::string>& names) {
+    std::vector<const Method*> methods;
+    for (const std::string& name : names) methods.push_back(&method_named(name));
+    if (methods.empty())
+        for (const Method& m : all_methods()) methods.push_back(&m);
+    return methods;
+}
+
 MeasureContext prepare_with_progress(const std::string& scene_file, int width, int height) {
     if (width < 1 || height < 1) throw std::invalid_argument("--size: expected positive WxH");
     const Scene scene = load_scene(scene_file);

@@ -2,6 +2,7 @@
 // `shadowlab measure SCENE --method M --resolution N [--size WxH] [--bias B] [--set k=v]... [--json]`
 #include <map>
 #include <string>
+#include <vector>
 
 #include "io/inspection_json.hpp"
 #include "metrics/measurement.hpp"
@@ -24,6 +25,8 @@ void run_measure(const MeasureOptions& options);
 // Shared with `bench` and `sweep`.
 Json to_json(const Measurement& measurement);
 const Method& method_named(const std::string& name);
+// The named methods, or every method when `names` is empty.
+std::vector<const Method*> methods_named(const std::vector<std::string>& names);
 MeasureContext prepare_with_progress(const std::string& scene_file, int width, int height);
 void check_resolution(int resolution);
 

@@ -61,10 +61,7 @@ ChartSpec error_against(const SweepSeries& sweep, const std::vector<const Method
 void run_sweep(const SweepOptions& o) {
     if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
     check_resolution(o.resolution);
-    std::vector<const Method*> methods;
-    for (const std::string& name : o.methods) methods.push_back(&method_named(name));
-    if (methods.empty())
-        for (const Method& m : all_methods()) methods.push_back(&m);
+    const std::vector<const Method*> methods = methods_named(o.methods);
     const Scene base = load_scene(o.scene_file);
     std::filesystem::create_directories(o.out_dir);
     const std::filesystem::path dir(o.out_dir);
