@@ -1,6 +1,7 @@
 // A vtkChartXY in a vtkContextView, rendered offscreen, read back and written with vtkPNGWriter.
 #include "plot/chart_png.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -85,7 +86,12 @@ vtkPlotPoints* add_plot(vtkChartXY& chart, int type, vtkTable* table, const Rgb&
     return plot;
 }
 
-void add_series(vtkChartXY& chart, const ChartSpec& spec, size_t index) {
+// The range of the points drawn, per axis (x, y).
+struct Bounds {
+    Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+};
+
+void add_series(vtkChartXY& chart, const ChartSpec& spec, size_t index, Bounds& bounds) {
     const ChartSeries& s = spec.series[index];
     const size_t n = s.x.size();
     if (s.y.size() != n || (!s.labels.empty() && s.labels.size() != n) || (!s.marked.empty() && s.marked.size() != n))
@@ -100,6 +106,10 @@ void add_series(vtkChartXY& chart, const ChartSpec& spec, size_t index) {
             continue;
         }
         kept.push_back({s.x[i], s.y[i]});
+        for (int a = 0; a < 2; ++a) {
+            bounds.lo[a] = std::min(bounds.lo[a], kept.back()[a]);
+            bounds.hi[a] = std::max(bounds.hi[a], kept.back()[a]);
+        }
         if (!s.labels.empty()) labels.push_back(s.labels[i]);
         if (!s.marked.empty() && s.marked[i]) marked.push_back({s.x[i], s.y[i]});
     }
@@ -123,6 +133,20 @@ void add_series(vtkChartXY& chart, const ChartSpec& spec, size_t index) {
     }
 }
 
+// A fixed range 4 % wider than the data on each side (in log space on a log axis), so that markers
+// at the ends are not cut; VTK's automatic range ends exactly at the data.
+void pad_axis(vtkAxis* axis, double lo, double hi, bool log) {
+    if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi)) return;
+    if (log) {
+        const double margin = 0.04 * std::max(std::log10(hi / lo), 0.5);
+        axis->SetUnscaledRange(lo / std::pow(10.0, margin), hi * std::pow(10.0, margin));
+    } else {
+        const double margin = 0.04 * (hi > lo ? hi - lo : std::max(std::abs(lo), 1.0));
+        axis->SetUnscaledRange(lo - margin, hi + margin);
+    }
+    axis->SetBehavior(vtkAxis::FIXED);
+}
+
 }  // namespace
 
 std::array<unsigned char, 3> series_color(const ChartSpec& chart, size_t index) {
@@ -143,7 +167,10 @@ void write_chart_png(const ChartSpec& spec, const std::string& png_file) {
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(spec.y_title);
     chart->GetAxis(vtkAxis::BOTTOM)->SetLogScale(spec.log_x);
     chart->GetAxis(vtkAxis::LEFT)->SetLogScale(spec.log_y);
-    for (size_t i = 0; i < spec.series.size(); ++i) add_series(*chart, spec, i);
+    Bounds bounds;
+    for (size_t i = 0; i < spec.series.size(); ++i) add_series(*chart, spec, i, bounds);
+    pad_axis(chart->GetAxis(vtkAxis::BOTTOM), bounds.lo[0], bounds.hi[0], spec.log_x);
+    pad_axis(chart->GetAxis(vtkAxis::LEFT), bounds.lo[1], bounds.hi[1], spec.log_y);
 
     require_display();  // before VTK opens one: it aborts the process when it cannot
     if (!std::ofstream(png_file, std::ios::binary)) throw std::runtime_error("cannot write the chart to " + png_file);
