@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
     measure_cmd->add_option("--method,-m", measure.method, "method name")->capture_default_str();
     measure_cmd->add_option("--resolution,-r", measure.resolution, "shadow map resolution (texels per side)")->capture_default_str();
     measure_cmd->add_option("--size", size, "camera image size WxH")->capture_default_str();
-    measure_cmd->add_option("--bias", measure.bias, "depth bias in world units (default: 2e-4 of the scene diagonal)");
+    measure_cmd->add_option("--bias", measure.bias, "depth bias in world units along the light (default: slope-scaled per pixel)");
     measure_cmd->add_option("--set", measure_pairs, "a method setting, key=value (repeatable)");
     measure_cmd->add_flag("--json", measure.json, "print one JSON object");
 

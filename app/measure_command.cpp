@@ -22,7 +22,7 @@ Json to_json(const Measurement& m) {
             {"setup_ms", m.setup_ms},
             {"raster_ms", m.raster_ms},
             {"fallback", m.fallback ? Json(*m.fallback) : Json(nullptr)},
-            {"bias", m.bias},
+            {"bias", m.bias >= 0.0 ? Json(m.bias) : Json("slope-scaled")},
             {"receiver_pixels", e.receiver_pixels}};
 }
 
@@ -31,7 +31,7 @@ namespace {
 void print_text(const MeasureOptions& o, const Measurement& m) {
     const ShadowError& e = m.error;
     std::cout << "method " << m.method << " at " << m.resolution << "^2, image " << o.width << "x" << o.height
-              << ", bias " << m.bias << "\n"
+              << ", bias " << (m.bias >= 0.0 ? std::to_string(m.bias) : std::string("slope-scaled")) << "\n"
               << "  misclassified " << 100 * e.misclassified << "% of " << e.receiver_pixels
               << " receiver pixels (false shadow " << 100 * e.false_shadow << "%, false light " << 100 * e.false_light
               << "%)\n"

@@ -15,7 +15,7 @@ struct MeasureOptions {
     std::map<std::string, std::string> settings;
     int resolution = 1024;
     int width = 1280, height = 720;
-    double bias = -1.0;  // world units along the light; < 0: 2e-4 of the scene's diagonal
+    double bias = -1.0;  // world units along the light; < 0: slope-scaled per pixel
     bool json = false;
 };
 

@@ -27,9 +27,8 @@ double setup_ms(const MeasureContext& c, const Method& method, const Settings& s
 }  // namespace
 
 MeasureContext prepare_measurement(const Scene& scene, int width, int height) {
-    MeasureContext c{scene, object_boxes(scene), tessellate(scene), caster_flags(scene), {}, 0.0};
+    MeasureContext c{scene, object_boxes(scene), tessellate(scene), caster_flags(scene), {}};
     c.reference = exact_reference(scene, c.triangles, width, height);
-    c.default_bias = 2e-4 * gather_inputs(scene.camera, scene.light, c.boxes).scene_bounds.diagonal();
     return c;
 }
 
@@ -38,7 +37,7 @@ Measurement measure_method(const MeasureContext& c, const Method& method, const 
     Measurement m;
     m.method = method.name;
     m.resolution = resolution;
-    m.bias = bias >= 0.0 ? bias : c.default_bias;
+    m.bias = bias;
     const ShadowSetup setup = method.compute(gather_inputs(c.scene.camera, c.scene.light, c.boxes), settings, nullptr);
     m.fallback = setup.fallback;
     m.setup_ms = setup_ms(c, method, settings);

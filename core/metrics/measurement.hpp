@@ -18,7 +18,6 @@ struct MeasureContext {
     WorldTriangles triangles;
     std::vector<bool> casters;
     ReferenceImage reference;
-    double default_bias = 0.0;  // 2e-4 of the scene's diagonal, in world units
 };
 
 MeasureContext prepare_measurement(const Scene& scene, int width, int height);
@@ -26,13 +25,13 @@ MeasureContext prepare_measurement(const Scene& scene, int width, int height);
 struct Measurement {
     std::string method;
     int resolution = 0;
-    double bias = 0.0;
+    double bias = -1.0;  // world units; negative: slope-scaled per pixel
     ShadowError error;
     double setup_ms = 0.0, raster_ms = 0.0;
     std::optional<std::string> fallback;
 };
 
-// bias < 0 takes the context's default.
+// bias: world units along the light; negative: slope-scaled per pixel (slope_scaled_bias).
 Measurement measure_method(const MeasureContext& context, const Method& method, const Settings& settings,
                            int resolution, double bias);
 

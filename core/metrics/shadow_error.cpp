@@ -23,6 +23,19 @@ double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm
     return slope > 0.0 ? 1.0 / slope : INFINITY;
 }
 
+double slope_scaled_bias(const ShadowMap& map, int resolution, const glm::dvec3& l, const glm::dvec3& p,
+                         double cos_theta) {
+    // Two directions across the light, and how far (u, v) moves along each per world unit.
+    const glm::dvec3 a = glm::normalize(glm::cross(l, std::abs(l.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 b = glm::cross(l, a);
+    const glm::dvec2 uv(world_to_uvz(map, p));
+    const double h = 1e-3 * (1.0 + glm::length(p));
+    const double extent = texel_extent_in_pixels(uv, glm::dvec2(world_to_uvz(map, p + h * a)),
+                                                 glm::dvec2(world_to_uvz(map, p + h * b)), resolution) * h;
+    const double tan_theta = std::min(10.0, std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)) / std::max(cos_theta, 1e-6));
+    return extent * (1.0 + tan_theta);
+}
+
 namespace {
 
 constexpr double kDepthBufferSteps = 16777216.0;  // a 24-bit depth buffer
@@ -30,6 +43,10 @@ constexpr double kDepthBufferSteps = 16777216.0;  // a 24-bit depth buffer
 // Faces turned from the light (or edge-on to it) are dark by shading whatever a map says: only
 // pixels of receivers that face the light are judged.
 constexpr float kMinFacing = 1e-3f;
+
+glm::dvec3 along_light(const Scene& scene, const glm::dvec3& p) {
+    return scene.light.is_directional() ? scene.light.direction : glm::normalize(p - scene.light.position);
+}
 
 bool receives(const Scene& scene, const ReferenceImage& ref, size_t i) {
     return ref.visible[i] && scene.objects[ref.object[i]].receives && ref.facing[i] > kMinFacing;
@@ -89,15 +106,17 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
             const size_t i = size_t(y) * ref.width + x;
             if (!receives(scene, ref, i)) continue;
             ++e.receiver_pixels;
-            const bool shadowed = in_shadow(depth, map, ref.position[i], bias);
+            const double pixel_bias =
+                bias >= 0.0 ? bias : slope_scaled_bias(map, depth.resolution, along_light(scene, ref.position[i]),
+                                                       ref.position[i], ref.facing[i]);
+            const bool shadowed = in_shadow(depth, map, ref.position[i], std::isfinite(pixel_bias) ? pixel_bias : 0.0);
             e.verdicts[i] = shadowed == !ref.lit[i] ? PixelVerdict::agree
                             : shadowed             ? PixelVerdict::false_shadow
                                                    : PixelVerdict::false_light;
             false_shadow += e.verdicts[i] == PixelVerdict::false_shadow;
             false_light += e.verdicts[i] == PixelVerdict::false_light;
-            const glm::dvec3 along = scene.light.is_directional() ? scene.light.direction
-                                                                 : glm::normalize(ref.position[i] - scene.light.position);
-            if (const double step = world_per_depth_unit(map, along, ref.position[i]) / kDepthBufferSteps;
+            if (const double step = world_per_depth_unit(map, along_light(scene, ref.position[i]), ref.position[i]) /
+                                    kDepthBufferSteps;
                 std::isfinite(step))
                 depth_steps.push_back(step);
             if (const double m = pixel_m(ref, map, depth.resolution, x, y); m > 0.0) {

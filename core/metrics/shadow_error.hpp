@@ -29,8 +29,15 @@ struct ShadowError {
     std::vector<PixelVerdict> verdicts;   // per pixel
 };
 
+// `bias` in world units along the light; a negative bias asks for the slope-scaled one below.
 ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& reference, const DepthMap& depth,
                                  const ShadowMap& map, double bias);
+
+// The bias a texel needs at p, as engines' slope-scaled bias: the texel's world size across the
+// light times (1 + tan θ), θ between the surface and the light (tan clamped to 10), so that the
+// surface within one texel never rises above its own stored depth.
+double slope_scaled_bias(const ShadowMap& map, int resolution, const glm::dvec3& light_direction,
+                         const glm::dvec3& p, double cos_theta);
 
 // World units along the light per unit of stored depth at p: 1 / (d d / d t), d = d_pre / w.
 double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& light_direction, const glm::dvec3& p);
