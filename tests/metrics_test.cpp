@@ -113,3 +113,13 @@ TEST(Metrics, MethodsRankAsTheLiteratureSaysUnderAnOverheadLight) {
     EXPECT_GT(focused, 2.0 * max_m("lispsm"));
     EXPECT_GT(focused, 2.0 * max_m("xpsm"));
 }
+
+TEST(Metrics, SlopeScaledBiasIsTheTexelSizeTimesOnePlusTanTheta) {
+    const Scene scene = overhead_scene();
+    const Method& uniform = *find_method("uniform");
+    const ShadowMap map = uniform.compute(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
+    // A 100-unit map of 500 texels: 0.2 units a texel; the ground faces the light (θ = 0).
+    EXPECT_NEAR(slope_scaled_bias(map, 500, scene.light.direction, {10, 0, 10}, 1.0), 0.2, 1e-6);
+    // A face at 45° to the light needs twice that.
+    EXPECT_NEAR(slope_scaled_bias(map, 500, scene.light.direction, {10, 0, 10}, std::sqrt(0.5)), 0.4, 1e-6);
+}
