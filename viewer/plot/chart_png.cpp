@@ -2,9 +2,11 @@
 #include "plot/chart_png.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
 
 #include <vtkAxis.h>
 #include <vtkChartXY.h>
@@ -30,7 +32,14 @@ namespace {
 using Rgb = std::array<unsigned char, 3>;
 using Point = std::array<double, 2>;
 
-void require_display();  // at the end of the file: Xlib's macros stay out of the VTK code
+// The X display the chart renders on, opened here (with a few retries: a busy Xvfb refuses a
+// connection now and then) and handed to VTK, which would abort the process on a failed open of
+// its own. Defined at the end of the file: Xlib's macros stay out of the VTK code.
+struct XDisplay {
+    void* display;
+    XDisplay();
+    ~XDisplay();
+};
 
 // Texts beside the points of a series. A points plot that paints labels instead of markers, so
 // that it follows the chart's axes (log scales included) exactly like the series it annotates.
@@ -172,13 +181,17 @@ void write_chart_png(const ChartSpec& spec, const std::string& png_file) {
     pad_axis(chart->GetAxis(vtkAxis::BOTTOM), bounds.lo[0], bounds.hi[0], spec.log_x);
     pad_axis(chart->GetAxis(vtkAxis::LEFT), bounds.lo[1], bounds.hi[1], spec.log_y);
 
-    require_display();  // before VTK opens one: it aborts the process when it cannot
+    const XDisplay x;  // before VTK would open one
     if (!std::ofstream(png_file, std::ios::binary)) throw std::runtime_error("cannot write the chart to " + png_file);
 
     vtkNew<vtkContextView> view;
     view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
     view->GetScene()->AddItem(chart);
     vtkRenderWindow* window = view->GetRenderWindow();
+    // No interactor: initializing one syncs with an X window an offscreen render never maps, and
+    // that crashed now and then in XSync under Xvfb.
+    window->SetInteractor(nullptr);
+    window->SetDisplayId(x.display);
     window->SetOffScreenRendering(1);
     window->SetSize(spec.width, spec.height);
     window->Render();
@@ -201,11 +214,15 @@ void write_chart_png(const ChartSpec& spec, const std::string& png_file) {
 namespace shadowlab {
 namespace {
 
-void require_display() {
-    Display* display = XOpenDisplay(nullptr);
+XDisplay::XDisplay() : display(nullptr) {
+    for (int attempt = 0; attempt < 5 && !display; ++attempt) {
+        if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(100 * attempt));
+        display = XOpenDisplay(nullptr);
+    }
     if (!display) throw std::runtime_error("plots need an X display: run under xvfb-run");
-    XCloseDisplay(display);
 }
+
+XDisplay::~XDisplay() { XCloseDisplay(static_cast<Display*>(display)); }
 
 }  // namespace
 }  // namespace shadowlab
