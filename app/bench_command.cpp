@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "measure_command.hpp"
-#include "plot/chart_png.hpp"
 
 namespace shadowlab {
 namespace {
@@ -33,10 +32,8 @@ ChartSpec error_against_cost(const std::vector<std::pair<std::string, std::vecto
         ChartSeries series;
         series.name = name;
         for (const Measurement& m : measurements) {
-            series.x.push_back(m.setup_ms + m.raster_ms);
-            series.y.push_back(100.0 * m.error.misclassified);
+            add_error_point(series, m.setup_ms + m.raster_ms, m);
             series.labels.push_back(std::to_string(m.resolution));
-            series.marked.push_back(m.fallback.has_value());
         }
         chart.series.push_back(std::move(series));
     }

@@ -24,8 +24,9 @@ std::string format_value(const TraceValue& value, const std::string& indent) {
         return out;
     }
     if (const auto* text = std::get_if<std::string>(&value)) return " " + *text;
+    const Json json = to_json(value);
     std::string out;
-    for (const auto& number : to_json(value).is_array() ? to_json(value) : Json::array({to_json(value)})) {
+    for (const auto& number : json.is_array() ? json : Json::array({json})) {
         char buffer[32];
         std::snprintf(buffer, sizeof buffer, "%.6g", number.get<double>());
         out += (out.empty() ? "" : ", ") + std::string(buffer);

@@ -72,6 +72,12 @@ MeasureContext prepare_with_progress(const std::string& scene_file, int width, i
     return context;
 }
 
+void add_error_point(ChartSeries& series, double x, const Measurement& m) {
+    series.x.push_back(x);
+    series.y.push_back(100.0 * m.error.misclassified);
+    series.marked.push_back(m.fallback.has_value());
+}
+
 void check_resolution(int resolution) {
     if (resolution < 1 || resolution > 16384)
         throw std::invalid_argument("--resolution: expected 1 to 16384, got " + std::to_string(resolution));

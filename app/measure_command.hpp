@@ -6,6 +6,7 @@
 
 #include "io/inspection_json.hpp"
 #include "metrics/measurement.hpp"
+#include "plot/chart_png.hpp"
 
 namespace shadowlab {
 
@@ -29,5 +30,7 @@ const Method& method_named(const std::string& name);
 std::vector<const Method*> methods_named(const std::vector<std::string>& names);
 MeasureContext prepare_with_progress(const std::string& scene_file, int width, int height);
 void check_resolution(int resolution);
+// One plotted point of a measurement: misclassified share in %, marked when a fallback was taken.
+void add_error_point(ChartSeries& series, double x, const Measurement& measurement);
 
 }  // namespace shadowlab

@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "measure_command.hpp"
-#include "plot/chart_png.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace shadowlab {
@@ -45,12 +44,7 @@ ChartSpec error_against(const SweepSeries& sweep, const std::vector<const Method
     for (size_t k = 0; k < methods.size(); ++k) {
         ChartSeries series;
         series.name = methods[k]->name;
-        for (size_t i = 0; i < sweep.values.size(); ++i) {
-            const Measurement& m = sweep.per_method[k][i];
-            series.x.push_back(sweep.values[i]);
-            series.y.push_back(100.0 * m.error.misclassified);
-            series.marked.push_back(m.fallback.has_value());
-        }
+        for (size_t i = 0; i < sweep.values.size(); ++i) add_error_point(series, sweep.values[i], sweep.per_method[k][i]);
         chart.series.push_back(std::move(series));
     }
     return chart;

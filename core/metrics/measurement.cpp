@@ -13,15 +13,16 @@ double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The fastest of a few runs: a setup takes microseconds and the machine is noisy.
-double setup_ms(const MeasureContext& c, const Method& method, const Settings& settings) {
-    double best = INFINITY;
+// The setup, and the fastest of a few runs of it: a setup takes microseconds and the machine is noisy.
+ShadowSetup timed_setup(const MeasureContext& c, const Method& method, const Settings& settings, double& best_ms) {
+    ShadowSetup setup;
+    best_ms = INFINITY;
     for (int run = 0; run < 5; ++run) {
         const Clock::time_point start = Clock::now();
-        const ShadowSetup setup = method.compute(gather_inputs(c.scene.camera, c.scene.light, c.boxes), settings, nullptr);
-        best = std::min(best, ms_since(start));
+        setup = method.compute(gather_inputs(c.scene.camera, c.scene.light, c.boxes), settings, nullptr);
+        best_ms = std::min(best_ms, ms_since(start));
     }
-    return best;
+    return setup;
 }
 
 }  // namespace
@@ -38,9 +39,8 @@ Measurement measure_method(const MeasureContext& c, const Method& method, const 
     m.method = method.name;
     m.resolution = resolution;
     m.bias = bias;
-    const ShadowSetup setup = method.compute(gather_inputs(c.scene.camera, c.scene.light, c.boxes), settings, nullptr);
+    const ShadowSetup setup = timed_setup(c, method, settings, m.setup_ms);
     m.fallback = setup.fallback;
-    m.setup_ms = setup_ms(c, method, settings);
     const Clock::time_point start = Clock::now();
     const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup.maps.at(0), resolution);
     m.raster_ms = ms_since(start);
