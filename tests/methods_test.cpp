@@ -88,6 +88,27 @@ TEST_P(MethodOnScene, TraceIsRecordedOnlyWhenAskedAndMatchesTheUntracedResult) {
     EXPECT_EQ(traced.maps[0].world_to_uvz, plain.maps[0].world_to_uvz);
 }
 
+// The frames a viewer draws the scene in: the unit frame is the map itself, and in the light
+// frame of a directional light a light ray keeps its x, y and moves along +z.
+TEST_P(MethodOnScene, TraceFramesPutTheSceneInTheMethodsSpaces) {
+    const auto& [method_name, file] = GetParam();
+    const ShadowInputs in = gather_inputs(load_scene(file));
+    Trace trace;
+    const ShadowSetup setup = run(*find_method(method_name), in, {}, &trace);
+    ASSERT_TRUE(trace.frame(Space::unit).has_value());
+    EXPECT_EQ(*trace.frame(Space::unit), setup.maps[0].world_to_uvz);
+    ASSERT_TRUE(trace.frame(Space::light).has_value()) << method_name << " on " << file;
+    if (!in.light.is_directional() || method_name == "psm") return;  // PSM's light lives in post-perspective space
+    const glm::dmat4& to_light = *trace.frame(Space::light);
+    const double step = 1e-2 * in.scene_bounds.diagonal();
+    for (const glm::dvec3& p : in.receiver_points()) {
+        const glm::dvec4 a = to_light * glm::dvec4(p, 1.0), b = to_light * glm::dvec4(p + step * in.light.direction, 1.0);
+        EXPECT_NEAR(a.x / a.w, b.x / b.w, 1e-9 * step);
+        EXPECT_NEAR(a.y / a.w, b.y / b.w, 1e-9 * step);
+        EXPECT_GT(b.z / b.w, a.z / a.w);
+    }
+}
+
 static std::vector<std::tuple<std::string, std::string>> all_pairs() {
     std::vector<std::tuple<std::string, std::string>> pairs;
     for (const Method& m : all_methods())

@@ -57,6 +57,7 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
               Space::light)
             .value("world_to_light", basis.world_to_light)
             .shape("B", PointSet{light_body}).shape("B box", body_box);
+        t.set_frame(Space::light, basis.world_to_light);
         t.add("gamma", "Angle γ", "sin γ = |view × light|: 1 when the light is perpendicular to the view",
               Space::light)
             .value("sin_gamma", sin_gamma).value("gamma_deg", glm::degrees(std::asin(std::min(1.0, sin_gamma))));
@@ -92,6 +93,7 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
         t.add("warp", "Perspective warp P", "x' = x/y, y' = f(y - n)/((f - n) y), z' = z/y about C", Space::ppls)
             .value("P", warp)
             .shape("warped B", PointSet{warped.points}).shape("warped box", warped_box);
+        t.set_frame(Space::ppls, warp * basis.world_to_light);
         t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min) over the warped body", Space::unit)
             .value("warped_to_unit", box_to_unit_cube(warped_box));
     });

@@ -28,6 +28,7 @@ static void fit_orthographic(const ShadowInputs& in, const MapFitRequest& req, S
             .shape("fit", light_box);
         t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min): the light box onto [0,1]^3", Space::unit)
             .value("light_to_unit", box_to_unit_cube(light_box));
+        t.set_frame(Space::light, basis.world_to_light);
     });
 }
 
@@ -48,6 +49,8 @@ static void fit_perspective(const ShadowInputs& in, const MapFitRequest& req, Sh
               "tangent bounds (x/z, y/z) and distance range of the points, clamped to the cone", Space::light)
             .value("tan_min", glm::dvec2(fit.light_box.min)).value("tan_max", glm::dvec2(fit.light_box.max))
             .value("near", fit.light_box.min.z).value("far", fit.light_box.max.z);
+        t.set_frame(Space::light, fit.world_to_light);
+        t.set_frame(Space::ppls, fit.map.world_to_uvz);  // a point light's own post-perspective space
     });
 }
 
@@ -72,6 +75,7 @@ void record_output(const ShadowSetup& setup, const std::vector<glm::dvec3>& cove
                 .shape("unit_cube", Aabb{glm::dvec3(0.0), glm::dvec3(1.0)})
                 .shape("covered_points", std::move(unit_points));
         }
+        if (!setup.maps.empty()) t.set_frame(Space::unit, setup.maps.front().world_to_uvz);
     });
 }
 

@@ -78,6 +78,8 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
               Space::ppls)
             .value("view_projection", camera.view_projection)
             .shape("PPS body", PointSet{pps.points}).shape("unit cube", Aabb{glm::dvec3(-1.0), glm::dvec3(1.0)});
+        t.set_frame(Space::view, glm::lookAt(camera.eye, camera.eye + in.camera.view_direction(), in.camera.up));
+        t.set_frame(Space::ppls, camera.view_projection);
         t.add("psm-light", "Light in PPS", "L' = P V (-L, 0): w ≈ 0 directional, w > 0 a point light, w < 0 behind the viewer",
               Space::ppls)
             .value("L_pps", light).value("w_over_length", w_ratio);
@@ -86,6 +88,13 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
     ShadowMap map;
     if (std::abs(w_ratio) < 1e-9) {  // light perpendicular to the view: still directional in PPS
         map = pps_orthographic(-glm::dvec3(light), pps.points, camera.view_projection);
+        record(trace, [&](Trace& t) {
+            t.add("psm-light-orthographic", "Orthographic light in PPS",
+                  "light perpendicular to the view: it stays directional in PPS, fitted like a focused map", Space::ppls)
+                .value("L_pps_direction", -glm::dvec3(light));
+            t.set_frame(Space::light, light_basis(-glm::dvec3(light), stable_up_hint(-glm::dvec3(light))).world_to_light *
+                                          camera.view_projection);
+        });
     } else {
         Light pps_light;
         pps_light.type = LightType::point;
@@ -115,6 +124,7 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
                 .value("light_position", pps_light.position).value("pps_to_light", fit.world_to_light)
                 .value("near", fit.light_box.min.z).value("far", fit.light_box.max.z)
                 .value("inverted", inverted ? 1.0 : 0.0);
+            t.set_frame(Space::light, fit.world_to_light * camera.view_projection);
         });
     }
     // Bias in world units along the light, exact at the centre of the visible region.

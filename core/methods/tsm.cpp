@@ -59,6 +59,7 @@ LightView light_view(const ShadowInputs& in, const IntersectionBody& body, Trace
             .value("eye_xy", glm::dvec2(0.0))
             .value("view_xy", glm::dvec2(glm::dmat3(v.world_to_light) * in.camera.view_direction()))
             .shape("B", PointSet{v.body}).shape("B projected", PointSet{in_xy_plane(v.points)});
+        t.set_frame(Space::light, v.world_to_light);
     });
     return v;
 }
@@ -285,6 +286,7 @@ ShadowSetup compute_tsm(const ShadowInputs& in, const Settings& s, Trace* trace)
 
     ShadowMap map;
     map.world_to_uvz = n_t * light.world_to_light;
+    record(trace, [&](Trace& t) { t.set_frame(Space::ppls, n_t * light.world_to_light); });  // the trapezoid's warp
     map.z_bias_scale = row(n_t, 2).z;  // depth per world unit along the light, before division by w
     setup.maps.push_back(map);
     record_output(setup, body->body.vertices, trace);

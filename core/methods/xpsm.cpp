@@ -97,6 +97,7 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
               Space::light)
             .value("LightSpace", light_space)
             .shape("Casters", PointSet{light_casters}).shape("Receivers", PointSet{light_receivers});
+        t.set_frame(Space::light, light_space);
         t.add("xpsm-2", "V", "the view vector in light space", Space::light).value("V", v);
         t.add("xpsm-3", "unitP", "V.xy / |V.xy|; |V.xy| < 0.1 is the miner's lamp case", Space::light)
             .value("abs_V_xy", v_xy)
@@ -110,6 +111,7 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
     }
     const Warp warp = projection_vector(glm::dvec2(v) / v_xy, v_xy, light_casters, light_receivers, s, trace);
     const glm::dmat4 ppls = ppls_transform(warp, trace);
+    record(trace, [&](Trace& t) { t.set_frame(Space::ppls, ppls * light_space); });
 
     // Steps 11 and 12: PPLS points (w < εW left out) and their boxes.
     const double min_w = s.number("epsilonW") * (1.0 - 1e-9);  // the extreme point itself stays in

@@ -2,6 +2,8 @@
 // A step trace: what a method did, step by step, in the space where each step happens.
 // Methods record through `record(trace, ...)`: with no trace asked for, the lambda is never
 // called, so nothing is computed, recorded or allocated for it.
+#include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -64,9 +66,15 @@ public:
             if (s.id == id) return &s;
         return nullptr;
     }
+    // The method's own map from world points into `space` (homogeneous: divide by w), so a viewer
+    // can draw the whole scene there. A method sets the spaces it uses; the last setting wins (a
+    // fallback's frames replace the warp's).
+    void set_frame(Space space, const glm::dmat4& world_to_space) { frames_[static_cast<int>(space)] = world_to_space; }
+    const std::optional<glm::dmat4>& frame(Space space) const { return frames_[static_cast<int>(space)]; }
 
 private:
     std::vector<Step> steps_;
+    std::array<std::optional<glm::dmat4>, 5> frames_;
 };
 
 // Calls fill(*trace) only when a trace was asked for.
