@@ -1,13 +1,18 @@
 #include "inspect_command.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
 
 #include "io/inspection_json.hpp"
 #include "math/matrix.hpp"
+#include "measure_command.hpp"
 #include "methods/method.hpp"
+#include "reference/exact_shadows.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/tessellation.hpp"
 
 namespace shadowlab {
 namespace {
@@ -43,22 +48,29 @@ std::string describe(const NamedGeometry& g) {
         else if constexpr (std::is_same_v<T, ConvexPolyhedron>)
             return "convex polyhedron, " + std::to_string(s.vertices.size()) + " vertices, " +
                    std::to_string(s.faces.size()) + " faces";
+        else if constexpr (std::is_same_v<T, SegmentSet>) return std::to_string(s.segments.size()) + " segments";
+        else if constexpr (std::is_same_v<T, PolygonSet>) {
+            size_t at_infinity = 0;
+            for (const glm::dvec4& v : s.vertices) at_infinity += v.w == 0.0;
+            return std::to_string(s.polygons.size()) + " polygons, " + std::to_string(at_infinity) + " of " +
+                   std::to_string(s.vertices.size()) + " vertices at infinity (w = 0)";
+        }
         else return "frustum (8 corners)";
     }, g.geometry);
 }
 
-void print_text(const std::string& scene_file, const Method& method, const Settings& settings,
-                const ShadowInputs& inputs, const ShadowSetup& setup, const Trace& trace) {
+void print_header(const std::string& scene_file, const std::string& name, const std::string& title,
+                  const Settings& settings) {
     std::cout << "scene:    " << scene_file << "\n"
-              << "method:   " << method.name << " (" << method.title << ")\n";
+              << "method:   " << name << " (" << title << ")\n";
     std::cout << "settings:";
     for (const auto& [key, value] : settings.values())
         std::cout << " " << key << "=" << (std::holds_alternative<double>(value)
                                                ? Json(std::get<double>(value)).dump() : std::get<std::string>(value));
     std::cout << (settings.values().empty() ? " none\n" : "\n");
-    std::cout << "inputs:   " << inputs.receivers.size() << " receiver boxes, " << inputs.casters.size()
-              << " caster boxes\n"
-              << "fallback: " << setup.fallback.value_or("none") << "\n\nsteps:\n";
+}
+
+void print_steps(const Trace& trace) {
     int n = 0;
     for (const Step& s : trace.steps()) {
         std::cout << "  " << ++n << ". " << s.title << "  [" << s.id << ", " << to_string(s.space) << " space]\n"
@@ -66,29 +78,58 @@ void print_text(const std::string& scene_file, const Method& method, const Setti
         for (const NamedValue& v : s.values) std::cout << "     " << v.name << ":" << format_value(v.value, "     ") << "\n";
         for (const NamedGeometry& g : s.geometry) std::cout << "     " << g.name << ": " << describe(g) << "\n";
     }
+}
+
+void inspect_map(const InspectOptions& options, const Method& method, const Settings& settings, const Scene& scene) {
+    const ShadowInputs inputs = gather_inputs(scene);
+    Trace trace;
+    const ShadowSetup setup = method.compute(inputs, settings, &trace);
+    if (options.json) {
+        std::cout << inspection_json(method.name, settings, inputs, setup, trace).dump(1) << "\n";
+        return;
+    }
+    print_header(options.scene_file, method.name, method.title, settings);
+    std::cout << "inputs:   " << inputs.receivers.size() << " receiver boxes, " << inputs.casters.size()
+              << " caster boxes\n"
+              << "fallback: " << setup.fallback.value_or("none") << "\n\nsteps:\n";
+    print_steps(trace);
     for (size_t i = 0; i < setup.maps.size(); ++i)
         std::cout << "\nmap " << i << " world_to_uvz (rows):" << format_value(setup.maps[i].world_to_uvz, "")
                   << "\nmap " << i << " z_bias_scale: " << setup.maps[i].z_bias_scale << "\n";
 }
 
+// A technique judges camera pixels: inspect looks through a small image of the camera's aspect.
+constexpr int kInspectImageWidth = 320;
+
+void inspect_technique(const InspectOptions& options, const Technique& technique, const Settings& settings,
+                       const Scene& scene) {
+    const WorldTriangles triangles = tessellate(scene);
+    const int height = std::max(1, int(std::lround(kInspectImageWidth / scene.camera.aspect)));
+    const ReferenceImage image = exact_reference(scene, triangles, kInspectImageWidth, height);
+    Trace trace;
+    const TechniqueResult result = technique.compute(scene, triangles, image, settings, &trace);
+    if (options.json) {
+        std::cout << technique_inspection_json(technique.name, settings, result, trace).dump(1) << "\n";
+        return;
+    }
+    print_header(options.scene_file, technique.name, technique.title, settings);
+    std::cout << "image:    " << image.width << "x" << image.height << " (the per-pixel steps)\n"
+              << "cost:     " << result.cost.polygons << " polygons, fill mean " << result.cost.fill_mean << ", max "
+              << result.cost.fill_max << " fragments per pixel\n"
+              << "fallback: " << result.fallback.value_or("none") << "\n\nsteps:\n";
+    print_steps(trace);
+}
+
 }  // namespace
 
 void run_inspect(const InspectOptions& options) {
-    const Method* method = find_method(options.method);
-    if (!method) {
-        std::string known;
-        for (const Method& m : all_methods()) known += " " + m.name;
-        throw std::invalid_argument("unknown method '" + options.method + "' (known:" + known + ")");
-    }
-    const Settings settings = resolve_settings(method->name, method->settings, options.settings);
+    const NamedMethod method = method_named(options.method);
+    const Settings settings = resolve_settings(method.name(), method.settings(), options.settings);
     const Scene scene = load_scene(options.scene_file);
-    const ShadowInputs inputs = gather_inputs(scene);
-    Trace trace;
-    const ShadowSetup setup = method->compute(inputs, settings, &trace);
-    if (options.json)
-        std::cout << inspection_json(method->name, settings, inputs, setup, trace).dump(1) << "\n";
+    if (method.map)
+        inspect_map(options, *method.map, settings, scene);
     else
-        print_text(options.scene_file, *method, settings, inputs, setup, trace);
+        inspect_technique(options, *method.technique, settings, scene);
 }
 
 }  // namespace shadowlab

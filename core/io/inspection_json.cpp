@@ -35,12 +35,27 @@ static Json polyhedron_json(const ConvexPolyhedron& poly) {
     return {{"kind", "polyhedron"}, {"vertices", points_json(poly.vertices)}, {"faces", faces}};
 }
 
+static Json segments_json(const SegmentSet& set) {
+    Json segments = Json::array();
+    for (const auto& [a, b] : set.segments) segments.push_back({to_json(a), to_json(b)});
+    return {{"kind", "segments"}, {"segments", segments}};
+}
+
+// Vertices as [x, y, z, w]: w = 0 is a point at infinity.
+static Json polygons_json(const PolygonSet& set) {
+    Json vertices = Json::array();
+    for (const glm::dvec4& v : set.vertices) vertices.push_back(to_json(v));
+    return {{"kind", "polygons"}, {"vertices", vertices}, {"polygons", set.polygons}};
+}
+
 Json to_json(const NamedGeometry& named) {
     Json out = std::visit([](const auto& g) -> Json {
         using T = std::decay_t<decltype(g)>;
         if constexpr (std::is_same_v<T, PointSet>) return {{"kind", "points"}, {"points", points_json(g.points)}};
         else if constexpr (std::is_same_v<T, Aabb>) return {{"kind", "aabb"}, {"min", to_json(g.min)}, {"max", to_json(g.max)}};
         else if constexpr (std::is_same_v<T, ConvexPolyhedron>) return polyhedron_json(g);
+        else if constexpr (std::is_same_v<T, SegmentSet>) return segments_json(g);
+        else if constexpr (std::is_same_v<T, PolygonSet>) return polygons_json(g);
         else return {{"kind", "frustum"}, {"corners", points_json({g.corners.begin(), g.corners.end()})}};
     }, named.geometry);
     out["name"] = named.name;
@@ -61,22 +76,39 @@ Json to_json(const ShadowMap& map) {
             {"z_bias_scale", map.z_bias_scale}};
 }
 
-Json inspection_json(const std::string& method, const Settings& settings, const ShadowInputs& inputs,
-                     const ShadowSetup& setup, const Trace& trace) {
-    Json settings_json = Json::object();
-    for (const auto& [key, value] : settings.values())
-        settings_json[key] = std::visit([](const auto& v) { return Json(v); }, value);
-    Json maps = Json::array();
-    for (const ShadowMap& m : setup.maps) maps.push_back(to_json(m));
+static Json settings_json(const Settings& settings) {
+    Json out = Json::object();
+    for (const auto& [key, value] : settings.values()) out[key] = std::visit([](const auto& v) { return Json(v); }, value);
+    return out;
+}
+
+static Json steps_json(const Trace& trace) {
     Json steps = Json::array();
     for (const Step& s : trace.steps()) steps.push_back(to_json(s));
+    return steps;
+}
+
+Json inspection_json(const std::string& method, const Settings& settings, const ShadowInputs& inputs,
+                     const ShadowSetup& setup, const Trace& trace) {
+    Json maps = Json::array();
+    for (const ShadowMap& m : setup.maps) maps.push_back(to_json(m));
     return {{"method", method},
-            {"settings", settings_json},
+            {"settings", settings_json(settings)},
             {"fallback", setup.fallback ? Json(*setup.fallback) : Json(nullptr)},
             {"inputs", {{"receivers", points_json(inputs.receiver_points())},
                         {"casters", points_json(inputs.caster_points())}}},
             {"maps", maps},
-            {"steps", steps}};
+            {"steps", steps_json(trace)}};
+}
+
+Json technique_inspection_json(const std::string& technique, const Settings& settings, const TechniqueResult& result,
+                               const Trace& trace) {
+    return {{"method", technique},
+            {"settings", settings_json(settings)},
+            {"fallback", result.fallback ? Json(*result.fallback) : Json(nullptr)},
+            {"cost", {{"polygons", result.cost.polygons}, {"fill_mean", result.cost.fill_mean},
+                      {"fill_max", result.cost.fill_max}}},
+            {"steps", steps_json(trace)}};
 }
 
 }  // namespace shadowlab

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "methods/method.hpp"
+#include "techniques/technique.hpp"
 
 namespace shadowlab {
 
@@ -19,5 +20,10 @@ Json to_json(const ShadowMap& map);
 
 Json inspection_json(const std::string& method, const Settings& settings, const ShadowInputs& inputs,
                      const ShadowSetup& setup, const Trace& trace);
+
+// A geometric technique's inspection: {"method", "settings", "fallback", "cost": {"polygons",
+// "fill_mean", "fill_max"}, "steps"} (no maps, no input boxes).
+Json technique_inspection_json(const std::string& technique, const Settings& settings, const TechniqueResult& result,
+                               const Trace& trace);
 
 }  // namespace shadowlab

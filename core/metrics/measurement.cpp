@@ -1,26 +1,21 @@
 #include "metrics/measurement.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+
+#include "math/stopwatch.hpp"
 
 namespace shadowlab {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // The setup, and the fastest of a few runs of it: a setup takes microseconds and the machine is noisy.
 ShadowSetup timed_setup(const MeasureContext& c, const Method& method, const Settings& settings, double& best_ms) {
     ShadowSetup setup;
     best_ms = INFINITY;
     for (int run = 0; run < 5; ++run) {
-        const Clock::time_point start = Clock::now();
+        const Stopwatch watch;
         setup = method.compute(gather_inputs(c.scene.camera, c.scene.light, c.boxes), settings, nullptr);
-        best_ms = std::min(best_ms, ms_since(start));
+        best_ms = std::min(best_ms, watch.ms());
     }
     return setup;
 }
@@ -41,10 +36,22 @@ Measurement measure_method(const MeasureContext& c, const Method& method, const 
     m.bias = bias;
     const ShadowSetup setup = timed_setup(c, method, settings, m.setup_ms);
     m.fallback = setup.fallback;
-    const Clock::time_point start = Clock::now();
+    const Stopwatch watch;
     const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup.maps.at(0), resolution);
-    m.raster_ms = ms_since(start);
+    m.raster_ms = watch.ms();
     m.error = measure_shadow_error(c.scene, c.reference, depth, setup.maps.at(0), m.bias);
+    return m;
+}
+
+Measurement measure_technique(const MeasureContext& c, const Technique& technique, const Settings& settings) {
+    const TechniqueResult result = technique.compute(c.scene, c.triangles, c.reference, settings, nullptr);
+    Measurement m;
+    m.method = technique.name;
+    m.error = judge_shadows(c.scene, c.reference, result.shadowed);
+    m.setup_ms = result.setup_ms;
+    m.raster_ms = result.raster_ms;
+    m.fallback = result.fallback;
+    m.geometry = result.cost;
     return m;
 }
 

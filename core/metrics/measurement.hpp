@@ -9,6 +9,7 @@
 #include "metrics/shadow_error.hpp"
 #include "reference/exact_shadows.hpp"
 #include "scene/tessellation.hpp"
+#include "techniques/technique.hpp"
 
 namespace shadowlab {
 
@@ -24,15 +25,20 @@ MeasureContext prepare_measurement(const Scene& scene, int width, int height);
 
 struct Measurement {
     std::string method;
-    int resolution = 0;
+    int resolution = 0;  // 0 for a technique without a map
     double bias = -1.0;  // world units; negative: slope-scaled per pixel
     ShadowError error;
     double setup_ms = 0.0, raster_ms = 0.0;
     std::optional<std::string> fallback;
+    std::optional<GeometryCost> geometry;  // techniques only: polygons drawn, fragments per pixel
 };
 
 // bias: world units along the light; negative: slope-scaled per pixel (slope_scaled_bias).
 Measurement measure_method(const MeasureContext& context, const Method& method, const Settings& settings,
                            int resolution, double bias);
+
+// A geometric technique against the same reference: error, the cost of building its geometry
+// (setup) and of judging the pixels (raster), its polygons and fill.
+Measurement measure_technique(const MeasureContext& context, const Technique& technique, const Settings& settings);
 
 }  // namespace shadowlab

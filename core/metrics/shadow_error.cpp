@@ -81,6 +81,35 @@ double pixel_m(const ReferenceImage& ref, const ShadowMap& map, int resolution, 
     return std::isfinite(m) ? m : 0.0;
 }
 
+ShadowError unjudged(const ReferenceImage& ref) {
+    ShadowError e;
+    const size_t pixels = size_t(ref.width) * ref.height;
+    e.m_image.assign(pixels, 0.0f);
+    e.verdicts.assign(pixels, PixelVerdict::none);
+    return e;
+}
+
+// One receiver pixel's verdict against the reference.
+void judge(ShadowError& e, const ReferenceImage& ref, size_t i, bool shadowed) {
+    ++e.receiver_pixels;
+    e.verdicts[i] = shadowed == !ref.lit[i] ? PixelVerdict::agree
+                    : shadowed             ? PixelVerdict::false_shadow
+                                           : PixelVerdict::false_light;
+}
+
+// The shares of the receiver pixels judged wrong, each way.
+void tally(ShadowError& e) {
+    size_t false_shadow = 0, false_light = 0;
+    for (PixelVerdict v : e.verdicts) {
+        false_shadow += v == PixelVerdict::false_shadow;
+        false_light += v == PixelVerdict::false_light;
+    }
+    const double n = std::max<size_t>(e.receiver_pixels, 1);
+    e.false_shadow = false_shadow / n;
+    e.false_light = false_light / n;
+    e.misclassified = e.false_shadow + e.false_light;
+}
+
 AliasingStats statistics(std::vector<double> values) {
     AliasingStats s;
     if (values.empty()) return s;
@@ -95,26 +124,16 @@ AliasingStats statistics(std::vector<double> values) {
 
 ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, const DepthMap& depth,
                                  const ShadowMap& map, double bias) {
-    ShadowError e;
-    const size_t pixels = size_t(ref.width) * ref.height;
-    e.m_image.assign(pixels, 0.0f);
-    e.verdicts.assign(pixels, PixelVerdict::none);
-    size_t false_shadow = 0, false_light = 0;
+    ShadowError e = unjudged(ref);
     std::vector<double> ms, depth_steps;
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
             const size_t i = size_t(y) * ref.width + x;
             if (!receives(scene, ref, i)) continue;
-            ++e.receiver_pixels;
             const double pixel_bias =
                 bias >= 0.0 ? bias : slope_scaled_bias(map, depth.resolution, along_light(scene, ref.position[i]),
                                                        ref.position[i], ref.facing[i]);
-            const bool shadowed = in_shadow(depth, map, ref.position[i], std::isfinite(pixel_bias) ? pixel_bias : 0.0);
-            e.verdicts[i] = shadowed == !ref.lit[i] ? PixelVerdict::agree
-                            : shadowed             ? PixelVerdict::false_shadow
-                                                   : PixelVerdict::false_light;
-            false_shadow += e.verdicts[i] == PixelVerdict::false_shadow;
-            false_light += e.verdicts[i] == PixelVerdict::false_light;
+            judge(e, ref, i, in_shadow(depth, map, ref.position[i], std::isfinite(pixel_bias) ? pixel_bias : 0.0));
             if (const double step = world_per_depth_unit(map, along_light(scene, ref.position[i]), ref.position[i]) /
                                     kDepthBufferSteps;
                 std::isfinite(step))
@@ -124,12 +143,17 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
                 ms.push_back(m);
             }
         }
-    const double n = std::max<size_t>(e.receiver_pixels, 1);
-    e.false_shadow = false_shadow / n;
-    e.false_light = false_light / n;
-    e.misclassified = e.false_shadow + e.false_light;
+    tally(e);
     e.m = statistics(std::move(ms));
     e.depth_step = statistics(std::move(depth_steps));
+    return e;
+}
+
+ShadowError judge_shadows(const Scene& scene, const ReferenceImage& ref, const std::vector<uint8_t>& shadowed) {
+    ShadowError e = unjudged(ref);
+    for (size_t i = 0; i < shadowed.size(); ++i)
+        if (receives(scene, ref, i)) judge(e, ref, i, shadowed[i] != 0);
+    tally(e);
     return e;
 }
 

@@ -33,6 +33,10 @@ struct ShadowError {
 ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& reference, const DepthMap& depth,
                                  const ShadowMap& map, double bias);
 
+// The same judgement of a technique without texels (shadow volumes, planar projection): its
+// per-pixel verdicts (1: shadowed) against the reference; m and depth_step stay 0.
+ShadowError judge_shadows(const Scene& scene, const ReferenceImage& reference, const std::vector<uint8_t>& shadowed);
+
 // The bias a texel needs at p, as engines' slope-scaled bias: the texel's world size across the
 // light times (1 + tan θ), θ between the surface and the light (tan clamped to 10), so that the
 // surface within one texel never rises above its own stored depth.

@@ -2,6 +2,8 @@
 // functions; d / w is affine in (u / w, v / w), so screen-space interpolation of it is exact.
 #include "raster/depth_map.hpp"
 
+#include "geometry/homogeneous_clip.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,27 +14,7 @@ namespace {
 
 constexpr double kMinRelativeW = 1e-9;  // clipped w stays above this fraction of the triangle's largest |w|
 
-using Polygon = std::vector<glm::dvec4>;  // homogeneous (u, v, d_pre, w), convex
-
-// The half-space normal . h >= offset.
-struct ClipPlane {
-    glm::dvec4 normal;
-    double offset;
-};
-
-// Sutherland-Hodgman against one half-space; new points interpolate the homogeneous coordinates.
-Polygon clip(const Polygon& polygon, const ClipPlane& plane) {
-    Polygon out;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const glm::dvec4& a = polygon[i];
-        const glm::dvec4& b = polygon[(i + 1) % polygon.size()];
-        const double da = glm::dot(plane.normal, a) - plane.offset;
-        const double db = glm::dot(plane.normal, b) - plane.offset;
-        if (da >= 0.0) out.push_back(a);
-        if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
-    }
-    return out;
-}
+using Polygon = HomogeneousPolygon;  // (u, v, d_pre, w)
 
 // The part of a triangle with w > 0 and 0 <= u, v <= w: in front of the map's centre and on it.
 // The w plane sits a hair above 0, relative to the triangle's scale, so the division stays finite.

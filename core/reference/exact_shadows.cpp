@@ -1,6 +1,8 @@
 // The visible point and the normal are recomputed in double precision from the hit triangle.
 #include "reference/exact_shadows.hpp"
 
+#include "math/parallel_rows.hpp"
+#include "reference/camera_rays.hpp"
 #include "reference/ray_tracer.hpp"
 
 #include <algorithm>
@@ -11,7 +13,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 namespace shadowlab {
 namespace {
@@ -27,13 +28,6 @@ double largest_coordinate(const std::vector<glm::dvec3>& vertices) {
 std::array<glm::dvec3, 3> corners(const WorldTriangles& triangles, int triangle) {
     const std::array<int, 3>& t = triangles.triangles[triangle];
     return {triangles.vertices[t[0]], triangles.vertices[t[1]], triangles.vertices[t[2]]};
-}
-
-// The view-space direction through a pixel centre (row 0 at the top) of a symmetric perspective
-// projection, scaled to z = -1 so that a ray's t along it is the view depth.
-glm::dvec3 pixel_direction(const glm::dmat4& projection, int x, int y, int width, int height) {
-    const double ndc_x = 2.0 * (x + 0.5) / width - 1.0, ndc_y = 1.0 - 2.0 * (y + 0.5) / height;
-    return {ndc_x / projection[0][0], ndc_y / projection[1][1], -1.0};
 }
 
 // Whether the surface point p of `triangle` sees the light past every caster.
@@ -62,8 +56,7 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
     const RayTracer tracer(triangles, caster_flags(scene));
     const double offset = kRelativeOffset * largest_coordinate(triangles.vertices);
     const Camera& camera = scene.camera;
-    const glm::dmat4 projection = camera.projection_matrix();
-    const glm::dmat3 view_to_world(glm::inverse(camera.view_matrix()));  // a rotation: t stays the view depth
+    const CameraRays rays(camera, width, height);
 
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     ReferenceImage image{width, height, std::vector<glm::dvec3>(pixels), std::vector<int>(pixels, -1),
@@ -71,8 +64,7 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
                          std::vector<float>(pixels, 0.0f)};
     auto trace_row = [&](int y) {
         for (int x = 0; x < width; ++x) {
-            const glm::dvec3 direction = view_to_world * pixel_direction(projection, x, y, width, height);
-            const std::optional<Hit> hit = tracer.first_hit(camera.position, direction, camera.near, camera.far);
+            const std::optional<Hit> hit = tracer.first_hit(camera.position, rays.direction(x, y), camera.near, camera.far);
             if (!hit) continue;
             const std::array<glm::dvec3, 3> triangle = corners(triangles, hit->triangle);
             const glm::dvec3 p = (1.0 - hit->u - hit->v) * triangle[0] + hit->u * triangle[1] + hit->v * triangle[2];
@@ -84,15 +76,9 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
             image.facing[i] = float(facing_light(scene.light, triangle, p, camera.position));
         }
     };
-    // Rows interleaved over the cores: each pixel is independent, so the image does not depend on
-    // how many threads traced it.
-    const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> workers;
-    for (int t = 0; t < threads; ++t)
-        workers.emplace_back([&, t] {
-            for (int y = t; y < height; y += threads) trace_row(y);
-        });
-    for (std::thread& w : workers) w.join();
+    parallel_rows([&](int first, int stride) {
+        for (int y = first; y < height; y += stride) trace_row(y);
+    });
     return image;
 }
 

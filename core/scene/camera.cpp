@@ -11,6 +11,10 @@ glm::dmat4 Camera::projection_matrix() const {
     return glm::perspective(glm::radians(fov_y_deg), aspect, near, far);
 }
 
+glm::dmat4 Camera::infinite_projection_matrix() const {
+    return glm::infinitePerspective(glm::radians(fov_y_deg), aspect, near);
+}
+
 // Built from the camera's axes rather than by inverting view-projection, which loses all
 // precision when far / near is large.
 Frustum Camera::frustum() const {

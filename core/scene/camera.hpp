@@ -18,6 +18,9 @@ struct Camera {
     glm::dvec3 view_direction() const { return glm::normalize(target - position); }
     glm::dmat4 view_matrix() const;        // world -> view
     glm::dmat4 projection_matrix() const;  // view -> OpenGL clip space
+    // The same with the far plane at infinity (Everitt and Kilgard 2002): points at infinity
+    // (w = 0) in front of the eye land at depth 1 instead of being clipped.
+    glm::dmat4 infinite_projection_matrix() const;
     Frustum frustum() const;               // in world space
 };
 

@@ -23,8 +23,30 @@ struct PointSet {
     std::vector<glm::dvec3> points;
 };
 
+// Line segments in world space (silhouette edges), each from .first to .second.
+struct SegmentSet {
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> segments;
+};
+
+// Planar convex polygons with homogeneous vertices (x, y, z, w): w = 0 is a point at infinity,
+// as a shadow volume's extruded quads and back caps have. Each polygon lists vertex indices in
+// order, counter-clockwise seen from the side its normal points to.
+struct PolygonSet {
+    std::vector<glm::dvec4> vertices;
+    std::vector<std::vector<int>> polygons;
+
+    PolygonSet& add(const std::vector<glm::dvec4>& polygon) {
+        std::vector<int>& loop = polygons.emplace_back();
+        for (const glm::dvec4& v : polygon) {
+            loop.push_back(static_cast<int>(vertices.size()));
+            vertices.push_back(v);
+        }
+        return *this;
+    }
+};
+
 using TraceValue = std::variant<double, glm::dvec2, glm::dvec3, glm::dvec4, glm::dmat4, std::string>;
-using TraceGeometry = std::variant<PointSet, Aabb, ConvexPolyhedron, Frustum>;
+using TraceGeometry = std::variant<PointSet, Aabb, ConvexPolyhedron, Frustum, SegmentSet, PolygonSet>;
 
 struct NamedValue {
     std::string name;

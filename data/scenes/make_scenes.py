@@ -215,8 +215,39 @@ def point(rng):
         few_objects(rng) + [mesh], 60)
 
 
+def volumes(rng):
+    """Closed meshes only (boxes, spheres, a cylinder, a mesh) for shadow volumes; a point light,
+    so that the volumes have back caps at infinity."""
+    objects = [
+        {"type": "box", "name": "crate", "position": [-4, 1, 0], "rotation": [0, 20, 0], "size": [2, 2, 2]},
+        {"type": "box", "name": "pillar", "position": [5, 2.5, -4], "rotation": [0, -35, 0], "size": [1.2, 5, 1.2]},
+        {"type": "sphere", "name": "ball", "position": [2.5, 1.2, 1], "radius": 1.2},
+        {"type": "sphere", "name": "floating_ball", "position": [-1, 3.5, 3], "radius": 0.7},
+        {"type": "cylinder", "name": "drum", "position": [-5, 1, -6], "radius": 1, "height": 2},
+        {"type": "mesh", "name": "tetrahedron", "file": "../meshes/tetrahedron.obj",
+         "position": [0, 0, -4], "rotation": [0, 30, 0], "scale": 3}]
+    return scene(
+        "volumes", "Closed meshes on a ground plane under a point light, for shadow volumes.",
+        camera((0, 7, 16), (0, -0.4, -1), near=0.1, far=100),
+        {"type": "point", "position": [-7, 12, -8]},
+        objects, 40)
+
+
+def volumes_eye_in_shadow(rng):
+    """The camera stands in the shadow of a tower behind it: z-pass counts from inside a volume."""
+    objects = [
+        {"type": "box", "name": "tower", "position": [0, 5, 10], "size": [8, 10, 2]},
+        {"type": "box", "name": "crate", "position": [-2, 1, -6], "rotation": [0, 25, 0], "size": [2, 2, 2]},
+        {"type": "sphere", "name": "ball", "position": [3, 1, -16], "radius": 1}]
+    return scene(
+        "volumes_eye_in_shadow", "The camera inside a tower's shadow volume (low sun behind the tower).",
+        camera((0, 1.7, 6), (0, -0.15, -1), near=0.1, far=100),
+        {"type": "directional", "direction": vec(0.1, -0.5, -1)},
+        objects, 60)
+
+
 SCENES = [default, light_parallel_behind, light_parallel_front, casters_behind, light_overhead,
-          far_near_1e5, box_on_plane, spot, point]
+          far_near_1e5, box_on_plane, spot, point, volumes, volumes_eye_in_shadow]
 
 
 def write(data, path):
