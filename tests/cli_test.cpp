@@ -238,3 +238,56 @@ TEST(Cli, SweepMarksXpsmsMinersLampAsTheLightTurnsParallel) {
     EXPECT_TRUE(is_png(out + "/sweep_angle.png"));
     EXPECT_TRUE(is_png(out + "/sweep_far_near.png"));
 }
+
+TEST(Cli, InspectVolumesListsSilhouetteEdgesAndQuadsAtInfinity) {
+    const CliResult r = run_cli("inspect " + source_path("data/scenes/volumes.json") + " --method volumes --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["method"], "volumes");
+    EXPECT_EQ(j["settings"]["count"], "zfail");
+    EXPECT_TRUE(j["fallback"].is_null()) << j["fallback"];
+    std::map<std::string, nlohmann::json> geometry;
+    for (const auto& step : j["steps"])
+        for (const auto& g : step["geometry"]) geometry[step["id"].get<std::string>() + "/" + g["kind"].get<std::string>()] = g;
+    ASSERT_TRUE(geometry.count("volumes.silhouette/segments"));
+    ASSERT_TRUE(geometry.count("volumes.extrusion/polygons"));
+    const auto& segments = geometry["volumes.silhouette/segments"]["segments"];
+    const auto& quads = geometry["volumes.extrusion/polygons"];
+    EXPECT_GT(segments.size(), 20u);
+    EXPECT_EQ(quads["polygons"].size(), segments.size());
+    for (const auto& polygon : quads["polygons"]) {
+        ASSERT_EQ(polygon.size(), 4u);
+        EXPECT_EQ(quads["vertices"][polygon[1].get<int>()][3], 1.0);  // on the caster
+        EXPECT_EQ(quads["vertices"][polygon[2].get<int>()][3], 0.0);  // at infinity
+    }
+}
+
+TEST(Cli, MeasureVolumesPrintsTheMapKeysAndItsOwn) {
+    const CliResult r = run_cli("measure " + source_path("data/scenes/volumes_eye_in_shadow.json") +
+                                " --method volumes --set count=zpass --size 160x90 --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    for (const char* key : {"method", "resolution", "misclassified", "false_shadow", "false_light", "m", "setup_ms",
+                            "raster_ms", "fallback", "polygons", "fill_mean", "fill_max"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_EQ(j["resolution"], 0);
+    EXPECT_EQ(j["m"]["max"], 0.0);
+    EXPECT_GT(j["polygons"].get<int>(), 0);
+    EXPECT_GE(j["fill_max"].get<double>(), j["fill_mean"].get<double>());
+    EXPECT_EQ(j["fallback"].get<std::string>().rfind(shadowlab::fallback::eye_in_volume, 0), 0u) << j["fallback"];
+    EXPECT_GT(j["misclassified"].get<double>(), 0.3) << "z-pass from inside a volume";
+}
+
+TEST(Cli, BenchPutsVolumesAndMapsInOneTable) {
+    const std::string out = ::testing::TempDir() + "shadowlab_bench_volumes";
+    std::filesystem::remove_all(out);
+    const CliResult r = run_cli("bench " + source_path("data/scenes/volumes.json") +
+                                " --methods focused,volumes,planar --resolutions 256,1024 --size 160x90 --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> csv = lines_of(out + "/bench.csv");
+    ASSERT_EQ(csv.size(), 5u);  // header + focused at 2 resolutions + volumes + planar once each
+    EXPECT_NE(csv[0].find(",polygons,fill_mean,fill_max"), std::string::npos) << csv[0];
+    EXPECT_NE(csv[3].find(",volumes,0,"), std::string::npos) << csv[3];
+    EXPECT_NE(csv[4].find(",planar,0,"), std::string::npos) << csv[4];
+    EXPECT_TRUE(csv[1].size() > 3 && csv[1].substr(csv[1].size() - 3) == ",,,") << "a map has no polygons: " << csv[1];
+}

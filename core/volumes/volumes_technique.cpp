@@ -61,7 +61,7 @@ void record_geometry(Trace* trace, const std::vector<ObjectTopology>& topology, 
         t.add("volumes.light-facing", "Light-facing triangles", "n . L > 0 with L the light as a homogeneous point",
               Space::world)
             .value("triangles", double(s.casting.size()))
-            .shape("front cap", polygon_set(v.front_cap));
+            .shape("light-facing", polygon_set(v.front_cap));
         SegmentSet edges;
         double multiplicity = 0.0;
         for (const SilhouetteEdge& e : s.edges) {
