@@ -1,13 +1,16 @@
-// shadowlab: the inspector's command line. Sub-commands run headless; with none, the default
-// scene is inspected (the GUI takes this place once the viewer lands).
+// shadowlab: the inspector. With no sub-command it opens the window on the default scene (or, with
+// no X display, prints the default scene's inspection); sub-commands run headless.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <CLI/CLI.hpp>
 
 #include "bench_command.hpp"
+#include "gui/inspector_app.hpp"
 #include "inspect_command.hpp"
 #include "measure_command.hpp"
+#include "render_command.hpp"
 #include "sweep_command.hpp"
 
 namespace {
@@ -82,8 +85,41 @@ int main(int argc, char** argv) {
     sweep_cmd->add_option("--size", sweep_size, "camera image size WxH")->capture_default_str();
     sweep_cmd->add_option("--out", sweep.out_dir, "output directory")->required();
 
+    shadowlab::RenderOptions render;
+    std::vector<std::string> render_pairs;
+    std::string render_size = "1280x720";
+    CLI::App* render_cmd = app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
+    render_cmd->add_option("scene", render.scene_file, "scene file (JSON)")->required();
+    render_cmd->add_option("--method,-m", render.method, "method name")->capture_default_str();
+    render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | error")->capture_default_str();
+    render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
+    render_cmd->add_option("--size", render_size, "image size WxH")->capture_default_str();
+    render_cmd->add_option("--resolution,-r", render.resolution, "shadow map resolution")->capture_default_str();
+    render_cmd->add_option("--bias", render.bias, "depth bias in world units along the light (default: slope-scaled per pixel)");
+    render_cmd->add_option("--set", render_pairs, "a method setting, key=value (repeatable)");
+    render_cmd->add_option("--out,-o", render.out, "PNG file to write")->required();
+
+    shadowlab::InspectorOptions gui;
+    gui.scene_file = default_scene();
+    std::string gui_size = "1600x1000";
+    CLI::App* gui_cmd = app.add_subcommand("gui", "open the inspector window (the default with no sub-command and an X display)");
+    gui_cmd->add_option("scene", gui.scene_file, "scene (JSON) or mesh file")->capture_default_str();
+    gui_cmd->add_option("--screenshot", gui.screenshot, "write the window to this PNG once drawn, then quit");
+    gui_cmd->add_option("--size", gui_size, "window size WxH")->capture_default_str();
+
     try {
         app.parse(argc, argv);
+        const bool no_subcommand = app.get_subcommands().empty();
+        if (app.got_subcommand(gui_cmd) || (no_subcommand && std::getenv("DISPLAY"))) {
+            parse_size(gui_size, gui.width, gui.height);
+            return shadowlab::run_inspector(argc > 0 ? 1 : 0, argv, gui);
+        }
+        if (app.got_subcommand(render_cmd)) {
+            render.settings = parse_settings(render_pairs);
+            parse_size(render_size, render.width, render.height);
+            shadowlab::run_render(render);
+            return 0;
+        }
         if (app.got_subcommand(sweep_cmd)) {
             parse_size(sweep_size, sweep.width, sweep.height);
             shadowlab::run_sweep(sweep);
@@ -102,7 +138,9 @@ int main(int argc, char** argv) {
         }
         if (app.got_subcommand(inspect_cmd)) {
             inspect.settings = parse_settings(set_pairs);
-        } else {
+        } else {  // no sub-command and no X display: the inspection as text
+            std::cerr << "shadowlab: no X display (DISPLAY unset): printing the inspection; run under xvfb-run "
+                         "or on a desktop for the window\n";
             inspect.scene_file = default_scene();
         }
         shadowlab::run_inspect(inspect);

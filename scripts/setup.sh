@@ -7,7 +7,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libassimp-dev
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libvtk9-dev
+  libvtk9-dev libvtk9-qt-dev qtbase5-dev libgl-dev
   xvfb xauth
 )
 

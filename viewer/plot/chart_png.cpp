@@ -2,11 +2,9 @@
 #include "plot/chart_png.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
-#include <thread>
 
 #include <vtkAxis.h>
 #include <vtkChartXY.h>
@@ -16,7 +14,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
-#include <vtkPNGWriter.h>
 #include <vtkPlotPoints.h>
 #include <vtkPoints2D.h>
 #include <vtkRenderWindow.h>
@@ -24,22 +21,15 @@
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
+
+#include "render/offscreen_view.hpp"
+#include "render/x_display.hpp"
 
 namespace shadowlab {
 namespace {
 
 using Rgb = std::array<unsigned char, 3>;
 using Point = std::array<double, 2>;
-
-// The X display the chart renders on, opened here (with a few retries: a busy Xvfb refuses a
-// connection now and then) and handed to VTK, which would abort the process on a failed open of
-// its own. Defined at the end of the file: Xlib's macros stay out of the VTK code.
-struct XDisplay {
-    void* display;
-    XDisplay();
-    ~XDisplay();
-};
 
 // Texts beside the points of a series. A points plot that paints labels instead of markers, so
 // that it follows the chart's axes (log scales included) exactly like the series it annotates.
@@ -181,7 +171,7 @@ void write_chart_png(const ChartSpec& spec, const std::string& png_file) {
     pad_axis(chart->GetAxis(vtkAxis::BOTTOM), bounds.lo[0], bounds.hi[0], spec.log_x);
     pad_axis(chart->GetAxis(vtkAxis::LEFT), bounds.lo[1], bounds.hi[1], spec.log_y);
 
-    const XDisplay x;  // before VTK would open one
+    const XDisplay x("plots");  // before VTK would open one
     if (!std::ofstream(png_file, std::ios::binary)) throw std::runtime_error("cannot write the chart to " + png_file);
 
     vtkNew<vtkContextView> view;
@@ -191,38 +181,12 @@ void write_chart_png(const ChartSpec& spec, const std::string& png_file) {
     // No interactor: initializing one syncs with an X window an offscreen render never maps, and
     // that crashed now and then in XSync under Xvfb.
     window->SetInteractor(nullptr);
-    window->SetDisplayId(x.display);
+    window->SetDisplayId(x.handle());
     window->SetOffScreenRendering(1);
     window->SetSize(spec.width, spec.height);
     window->Render();
 
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(png_file.c_str());
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->Write();
-    if (writer->GetErrorCode() != 0) throw std::runtime_error("cannot write the chart to " + png_file);
+    write_png(grab(window), png_file);
 }
 
-}  // namespace shadowlab
-
-#include <X11/Xlib.h>
-
-namespace shadowlab {
-namespace {
-
-XDisplay::XDisplay() : display(nullptr) {
-    for (int attempt = 0; attempt < 5 && !display; ++attempt) {
-        if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(100 * attempt));
-        display = XOpenDisplay(nullptr);
-    }
-    if (!display) throw std::runtime_error("plots need an X display: run under xvfb-run");
-}
-
-XDisplay::~XDisplay() { XCloseDisplay(static_cast<Display*>(display)); }
-
-}  // namespace
 }  // namespace shadowlab

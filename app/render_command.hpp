@@ -1,0 +1,23 @@
+#pragma once
+// `shadowlab render SCENE --method M [--view V] [--step ID] [--size WxH] [--resolution N] [--bias B] --out FILE.png`
+#include <map>
+#include <string>
+
+namespace shadowlab {
+
+struct RenderOptions {
+    std::string scene_file;
+    std::string method = "focused";
+    std::map<std::string, std::string> settings;
+    std::string view = "camera";
+    std::string step;  // empty: the method's last step
+    int width = 1280, height = 720;
+    int resolution = 2048;
+    double bias = -1.0;  // world units along the light; < 0: automatic
+    std::string out;
+};
+
+// Draws the view offscreen and writes the PNG; notes and fallbacks go to stderr. Throws on bad input.
+void run_render(const RenderOptions& options);
+
+}  // namespace shadowlab

@@ -1,0 +1,16 @@
+#pragma once
+// A method's maps as shader source or JSON, for pasting into an engine.
+#include <string>
+
+#include "methods/method.hpp"
+
+namespace shadowlab {
+
+enum class MatrixFormat { glsl, hlsl, json };
+
+// GLSL: `const mat4 worldToUvz0 = mat4(...)`, column by column (GLSL's order), used as M * p.
+// HLSL: `static const float4x4 worldToUvz0 = {...}`, row by row, used as mul(M, p).
+// Both also give the z bias scale and a comment naming the method. JSON: {"method", "maps"}.
+std::string export_matrices(const std::string& method, const ShadowSetup& setup, MatrixFormat format);
+
+}  // namespace shadowlab

@@ -1,0 +1,106 @@
+// The window as a user drives it: switching the method changes what the views draw; a bad file
+// is reported by name and field while the previous scene stays; a mesh alone becomes a scene.
+#include <QComboBox>
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+
+#include "gui/controls_panel.hpp"
+#include "gui/main_window.hpp"
+#include "gui/step_player.hpp"
+#include "gui/view_panel.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+QString source(const char* relative) { return QString(SHADOWLAB_SOURCE_DIR) + "/" + relative; }
+
+// The share of pixels that differ between two grabs of the same size.
+double changed_share(const RgbImage& a, const RgbImage& b) {
+    if (a.width != b.width || a.height != b.height) return 1.0;
+    size_t changed = 0;
+    for (size_t i = 0; i < a.rgb.size(); i += 3)
+        changed += a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2];
+    return static_cast<double>(changed) / (a.rgb.size() / 3);
+}
+
+}  // namespace
+
+class MainWindowTest : public QObject {
+    Q_OBJECT
+    std::unique_ptr<MainWindow> window_;
+
+    ViewPanel* panel_showing(ViewKind view) {
+        for (ViewPanel* p : window_->panels())
+            if (p->view() == view) return p;
+        return nullptr;
+    }
+
+private slots:
+    void init() {
+        QSettings().clear();  // a fresh layout, not the last test's
+        window_ = std::make_unique<MainWindow>();
+        window_->resize(1400, 900);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        QVERIFY(window_->open_file(source("data/scenes/box_on_plane.json")));
+        QApplication::processEvents();
+    }
+    void cleanup() { window_.reset(); }
+
+    void switchingTheMethodChangesTheViews() {
+        ViewPanel* light = panel_showing(ViewKind::light);
+        ViewPanel* map = panel_showing(ViewKind::shadow_map);
+        QVERIFY(light && map);
+        const RgbImage light_before = light->grab(), map_before = map->grab();
+        QComboBox* selector = window_->controls()->method_selector();
+        selector->setCurrentIndex(selector->findData("lispsm"));
+        QApplication::processEvents();
+        QCOMPARE(QString::fromStdString(window_->inspection()->method->name), QString("lispsm"));
+        QVERIFY2(changed_share(light_before, light->grab()) > 0.01, "the Light space view did not change");
+        QVERIFY2(changed_share(map_before, map->grab()) > 0.05, "the Shadow map view did not change");
+        QVERIFY(window_->steps()->chosen().size() > 0);
+    }
+
+    void aBadFileIsReportedAndTheSceneStays() {
+        ViewPanel* camera = panel_showing(ViewKind::camera);
+        const RgbImage before = camera->grab();
+        QVERIFY(!window_->open_file(source("tests/data/bad/negative_size.json")));
+        QVERIFY2(window_->last_message().contains("negative_size.json"), qPrintable(window_->last_message()));
+        QVERIFY2(window_->last_message().contains("objects[1].size"), qPrintable(window_->last_message()));
+        QCOMPARE(QString::fromStdString(window_->scene().name), QString("box_on_plane"));
+        QVERIFY(window_->inspection() != nullptr);
+        QApplication::processEvents();
+        QVERIFY2(changed_share(before, camera->grab()) < 0.001, "the Camera view changed after a failed open");
+    }
+
+    void aMeshAloneGetsAGroundACameraAndASun() {
+        QVERIFY(window_->open_file(source("data/meshes/tetrahedron.obj")));
+        QCOMPARE(window_->scene().objects.size(), size_t(2));
+        QCOMPARE(QString::fromStdString(window_->scene().name), QString("tetrahedron"));
+    }
+
+    void choosingAStepHighlightsItsGeometry() {
+        ViewPanel* world = panel_showing(ViewKind::world);
+        const RgbImage last = world->grab();
+        window_->steps()->choose(2);  // the intersection body
+        QApplication::processEvents();
+        QCOMPARE(window_->steps()->chosen(), QString("body"));
+        QVERIFY2(changed_share(last, world->grab()) > 0.005, "choosing a step did not change the World view");
+    }
+};
+
+int main(int argc, char** argv) {
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    QApplication app(argc, argv);
+    QTemporaryDir settings;
+    QApplication::setOrganizationName("ShadowLabTests");
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settings.path());
+    MainWindowTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "main_window_test.moc"

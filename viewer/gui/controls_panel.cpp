@@ -1,0 +1,155 @@
+#include "gui/controls_panel.hpp"
+
+#include <cmath>
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QVBoxLayout>
+
+namespace shadowlab {
+namespace {
+
+QSlider* slider(int min, int max, QWidget* parent) {
+    auto* s = new QSlider(Qt::Horizontal, parent);
+    s->setRange(min, max);
+    return s;
+}
+
+// A setting's editor: a spin box over its range, or a combo box over its choices.
+QWidget* setting_editor(const SettingSpec& spec, QWidget* parent) {
+    if (spec.is_choice()) {
+        auto* box = new QComboBox(parent);
+        for (const std::string& choice : spec.choices) box->addItem(QString::fromStdString(choice));
+        box->setCurrentText(QString::fromStdString(spec.default_value));
+        return box;
+    }
+    auto* spin = new QDoubleSpinBox(parent);
+    spin->setDecimals(4);
+    spin->setRange(spec.min, std::min(spec.max, 1e9));
+    spin->setSingleStep(std::max((std::min(spec.max, 1e3) - spec.min) / 100.0, 1e-4));
+    spin->setValue(std::stod(spec.default_value));
+    return spin;
+}
+
+}  // namespace
+
+ControlsPanel::ControlsPanel(QWidget* parent)
+    : QWidget(parent),
+      method_(new QComboBox(this)),
+      settings_form_(nullptr),
+      settings_box_(new QGroupBox("Method settings", this)),
+      resolution_(new QComboBox(this)),
+      bias_(new QDoubleSpinBox(this)),
+      azimuth_(slider(0, 359, this)),
+      elevation_(slider(1, 90, this)),
+      light_label_(new QLabel(this)) {
+    method_->setObjectName("methodSelector");
+    for (const Method& m : all_methods()) {
+        method_->addItem(QString::fromStdString(m.name), QString::fromStdString(m.name));
+        method_->setItemData(method_->count() - 1, QString::fromStdString(m.title + ": " + m.description), Qt::ToolTipRole);
+    }
+    method_->setCurrentText("focused");
+    for (int r : {128, 256, 512, 1024, 2048, 4096}) resolution_->addItem(QString::number(r) + "²", r);
+    resolution_->setCurrentIndex(3);
+    bias_->setRange(-0.0001, 1e4);
+    bias_->setDecimals(4);
+    bias_->setSingleStep(0.005);
+    bias_->setSpecialValueText("slope-scaled");  // the minimum: per pixel, as the metrics use
+    bias_->setValue(bias_->minimum());
+    bias_->setToolTip("depth bias in world units along the light; 'slope-scaled' = the texel's world size times 1 + tan θ, per pixel");
+    azimuth_->setToolTip("light azimuth (degrees about +y)");
+    elevation_->setToolTip("light elevation (degrees above the horizon)");
+    settings_form_ = new QFormLayout(settings_box_);
+
+    auto* general = new QFormLayout;
+    general->addRow("Method", method_);
+    general->addRow("Map", resolution_);
+    general->addRow("Bias", bias_);
+    auto* light = new QGroupBox("Light direction", this);
+    auto* light_form = new QFormLayout(light);
+    light_form->addRow("Azimuth", azimuth_);
+    light_form->addRow("Elevation", elevation_);
+    light_form->addRow(light_label_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(general);
+    layout->addWidget(settings_box_);
+    layout->addWidget(light);
+    layout->addStretch(1);
+    rebuild_settings();
+
+    connect(method_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+        rebuild_settings();
+        emit changed();
+    });
+    connect(resolution_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::changed);
+    connect(bias_, &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
+    for (QSlider* s : {azimuth_, elevation_}) connect(s, &QSlider::valueChanged, this, [this] {
+        const glm::dvec3 d = light_direction();
+        light_label_->setText(QString("(%1, %2, %3)").arg(d.x, 0, 'f', 3).arg(d.y, 0, 'f', 3).arg(d.z, 0, 'f', 3));
+        emit lightChanged();
+    });
+}
+
+void ControlsPanel::rebuild_settings() {
+    while (settings_form_->rowCount() > 0) settings_form_->removeRow(0);
+    const Method* method = find_method(method_->currentData().toString().toStdString());
+    for (const SettingSpec& spec : method->settings) {
+        QWidget* editor = setting_editor(spec, settings_box_);
+        editor->setObjectName(QString::fromStdString(spec.name));
+        editor->setToolTip(QString::fromStdString(spec.description));
+        if (auto* box = qobject_cast<QComboBox*>(editor))
+            connect(box, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::changed);
+        else
+            connect(static_cast<QDoubleSpinBox*>(editor), &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
+        settings_form_->addRow(QString::fromStdString(spec.name), editor);
+    }
+    settings_box_->setVisible(!method->settings.empty());
+}
+
+InspectionRequest ControlsPanel::request() const {
+    InspectionRequest r;
+    r.method = method_->currentData().toString().toStdString();
+    r.resolution = resolution_->currentData().toInt();
+    r.bias = bias_->value() <= bias_->minimum() ? -1.0 : bias_->value();
+    for (int row = 0; row < settings_form_->rowCount(); ++row) {
+        QWidget* editor = settings_form_->itemAt(row, QFormLayout::FieldRole)->widget();
+        const std::string key = editor->objectName().toStdString();
+        if (auto* box = qobject_cast<QComboBox*>(editor))
+            r.settings[key] = box->currentText().toStdString();
+        else
+            r.settings[key] = QString::number(static_cast<QDoubleSpinBox*>(editor)->value(), 'g', 12).toStdString();
+    }
+    return r;
+}
+
+glm::dvec3 ControlsPanel::light_direction() const {
+    const double az = glm::radians(static_cast<double>(azimuth_->value()));
+    const double el = glm::radians(static_cast<double>(elevation_->value()));
+    return -glm::dvec3(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
+}
+
+void ControlsPanel::set_light_direction(const glm::dvec3& direction) {
+    const glm::dvec3 to_light = -glm::normalize(direction);
+    const QSignalBlocker block_a(azimuth_), block_e(elevation_);
+    elevation_->setValue(static_cast<int>(std::lround(glm::degrees(std::asin(std::clamp(to_light.y, -1.0, 1.0))))));
+    int az = static_cast<int>(std::lround(glm::degrees(std::atan2(to_light.z, to_light.x))));
+    azimuth_->setValue((az + 360) % 360);
+    light_label_->setText(QString("(%1, %2, %3)").arg(direction.x, 0, 'f', 3).arg(direction.y, 0, 'f', 3).arg(direction.z, 0, 'f', 3));
+}
+
+void ControlsPanel::set_method(const QString& name) {
+    const int index = method_->findData(name);
+    if (index >= 0) method_->setCurrentIndex(index);
+}
+
+void ControlsPanel::set_resolution(int resolution) {
+    const int index = resolution_->findData(resolution);
+    if (index >= 0) resolution_->setCurrentIndex(index);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,33 @@
+#include "gui/inspector_app.hpp"
+
+#include <QApplication>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include "gui/main_window.hpp"
+#include "render/x_display.hpp"
+
+namespace shadowlab {
+
+int run_inspector(int argc, char** argv, const InspectorOptions& options) {
+    { const XDisplay probe("the window"); }  // a clear message instead of Qt's abort
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    QApplication::setOrganizationName("ShadowLab");
+    QApplication::setApplicationName("shadowlab");
+    QApplication app(argc, argv);
+    MainWindow window;
+    window.resize(options.width, options.height);
+    window.show();
+    QApplication::processEvents();  // lay out first: the Camera view's shape is the camera's aspect
+    window.open_file(QString::fromStdString(options.scene_file));
+    if (!options.screenshot.empty()) {
+        QTimer::singleShot(500, &window, [&] {
+            const bool ok = window.grab().save(QString::fromStdString(options.screenshot));
+            QApplication::exit(ok ? 0 : 1);
+        });
+    }
+    return QApplication::exec();
+}
+
+}  // namespace shadowlab

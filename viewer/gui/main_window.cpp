@@ -1,0 +1,275 @@
+#include "gui/main_window.hpp"
+
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QPlainTextEdit>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTime>
+#include <fstream>
+
+#include "gui/controls_panel.hpp"
+#include "gui/plot_panel.hpp"
+#include "gui/step_player.hpp"
+#include "gui/view_panel.hpp"
+#include "render/rgb_image.hpp"
+#include "scene/mesh_scene.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace shadowlab {
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+Scene load_any(const QString& path) {
+    const std::string file = path.toStdString();
+    return QFileInfo(path).suffix().compare("json", Qt::CaseInsensitive) == 0 ? load_scene(file) : scene_around_mesh(file);
+}
+
+QDockWidget* dock(const QString& title, const QString& name, QWidget* content, QMainWindow* window) {
+    auto* d = new QDockWidget(title, window);
+    d->setObjectName(name);
+    d->setWidget(content);
+    return d;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      controls_(new ControlsPanel(this)),
+      steps_(new StepPlayer(this)),
+      plot_(new PlotPanel(this)),
+      messages_(new QPlainTextEdit(this)) {
+    setWindowTitle("ShadowLab");
+    setAcceptDrops(true);
+    messages_->setReadOnly(true);
+    messages_->setObjectName("messages");
+
+    // Four linked views: World | Camera over Light space | Shadow map; each can show any view.
+    auto* rows = new QSplitter(Qt::Vertical, this);
+    for (const auto& pair : {std::pair{ViewKind::world, ViewKind::camera}, std::pair{ViewKind::light, ViewKind::shadow_map}}) {
+        auto* row = new QSplitter(Qt::Horizontal, rows);
+        for (ViewKind v : {pair.first, pair.second}) {
+            auto* panel = new ViewPanel(v, row);
+            panels_.push_back(panel);
+            connect(panel, &ViewPanel::viewChosen, this, [this, panel] { redraw(panel); });
+            connect(panel, &ViewPanel::cameraMoved, this,
+                    [this](const glm::dvec3& p, const glm::dvec3& t, const glm::dvec3& u) {
+                        scene_.camera.position = p, scene_.camera.target = t, scene_.camera.up = u;
+                        recompute();
+                    });
+        }
+        splitters_.push_back(row);
+    }
+    splitters_.push_back(rows);
+    setCentralWidget(rows);
+    active_panel_ = panels_.front();
+
+    addDockWidget(Qt::LeftDockWidgetArea, dock("Controls", "controlsDock", controls_, this));
+    addDockWidget(Qt::RightDockWidgetArea, dock("Steps", "stepsDock", steps_, this));
+    addDockWidget(Qt::BottomDockWidgetArea, dock("Messages", "messagesDock", messages_, this));
+    QDockWidget* plot_dock = dock("Plot", "plotDock", plot_, this);
+    addDockWidget(Qt::BottomDockWidgetArea, plot_dock);
+    plot_dock->hide();  // measured on demand: View > Plot
+    build_menus();
+    statusBar()->showMessage("drop a scene (.json) or a mesh (.obj, .ply, .stl, .gltf) here, or use File > Open");
+
+    connect(controls_, &ControlsPanel::changed, this, &MainWindow::recompute);
+    connect(controls_, &ControlsPanel::lightChanged, this, [this] {
+        scene_.light.direction = controls_->light_direction();
+        recompute();
+    });
+    connect(steps_, &StepPlayer::stepChosen, this, [this] { redraw(); });
+    connect(plot_dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) recompute();
+    });
+    restore_settings();
+}
+
+void MainWindow::build_menus() {
+    QMenu* file = menuBar()->addMenu("&File");
+    file->addAction("&Open…", this, &MainWindow::open_dialog, QKeySequence::Open);
+    recent_menu_ = file->addMenu("Open &recent");
+    rebuild_recent_menu();
+    file->addSeparator();
+    file->addAction("Export view as &PNG…", this, &MainWindow::export_view);
+    QMenu* matrices = file->addMenu("Export &matrices");
+    for (const auto& [name, format] : {std::pair{"GLSL", MatrixFormat::glsl}, std::pair{"HLSL", MatrixFormat::hlsl},
+                                       std::pair{"JSON", MatrixFormat::json}}) {
+        const MatrixFormat f = format;
+        matrices->addAction(QString("%1 to file…").arg(name), this, [this, f] { export_matrices(f, false); });
+        matrices->addAction(QString("%1 to clipboard").arg(name), this, [this, f] { export_matrices(f, true); });
+    }
+    file->addSeparator();
+    file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+    QMenu* view = menuBar()->addMenu("&View");
+    for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
+}
+
+bool MainWindow::open_file(const QString& path) {
+    try {
+        Scene loaded = load_any(path);
+        std::swap(scene_, loaded);
+        controls_->set_light_direction(scene_.light.direction);
+        inspection_.reset();
+        recompute();
+        if (!inspection_) {  // the new scene cannot be inspected: back to the old one
+            std::swap(scene_, loaded);
+            recompute();
+            return false;
+        }
+        remember_recent(path);
+        setWindowTitle("ShadowLab — " + QFileInfo(path).fileName());
+        message("opened " + path + " (" + QString::number(scene_.objects.size()) + " objects)", false);
+        return true;
+    } catch (const std::exception& e) {
+        message(QString::fromStdString(e.what()), true);
+        return false;
+    }
+}
+
+void MainWindow::recompute() {
+    if (scene_.objects.empty()) return;
+    for (ViewPanel* panel : panels_)  // the camera's image is the Camera view's panel
+        if (panel->view() == ViewKind::camera && panel->width() > 0 && panel->height() > 40)
+            scene_.camera.aspect = static_cast<double>(panel->width()) / (panel->height() - 30);
+    try {
+        inspection_ = inspect_scene(scene_, controls_->request());
+    } catch (const std::exception& e) {
+        message(QString::fromStdString(e.what()), true);
+        return;
+    }
+    steps_->set_trace(inspection_->trace);
+    const std::string fallback = inspection_->setup.fallback.value_or("none");
+    const std::string bias = inspection_->bias < 0.0 ? "slope-scaled" : std::to_string(inspection_->bias);
+    statusBar()->showMessage(QString::fromStdString(inspection_->method->title + " — " +
+                                                    std::to_string(inspection_->resolution) + "² map, bias " + bias +
+                                                    " — fallback: " + fallback));
+    if (inspection_->setup.fallback) message(QString::fromStdString("fallback: " + fallback), false);
+    redraw();
+    if (plot_->isVisible()) {
+        try {
+            plot_->update_plot(scene_, inspection_->method->name, controls_->request().settings);
+        } catch (const std::exception& e) {
+            message(QString("plot: ") + e.what(), true);
+        }
+    }
+}
+
+void MainWindow::redraw() {
+    for (ViewPanel* panel : panels_) redraw(panel);
+}
+
+void MainWindow::redraw(ViewPanel* panel) {
+    if (!inspection_) return;
+    active_panel_ = panel;
+    ViewOptions options;
+    options.step = steps_->chosen().toStdString();
+    try {
+        for (const std::string& note : panel->show(*inspection_, options).notes)
+            message(QString(view_title(panel->view())) + ": " + QString::fromStdString(note), false);
+    } catch (const std::exception& e) {
+        message(QString::fromStdString(e.what()), true);
+    }
+}
+
+void MainWindow::message(const QString& text, bool error) {
+    last_message_ = text;
+    messages_->appendPlainText(QTime::currentTime().toString("HH:mm:ss ") + (error ? "error: " : "") + text);
+    if (error) statusBar()->showMessage("error: " + text);
+}
+
+void MainWindow::open_dialog() {
+    const QString path = QFileDialog::getOpenFileName(this, "Open a scene or a mesh", QString(),
+                                                      "Scenes and meshes (*.json *.obj *.ply *.stl *.gltf *.glb);;All files (*)");
+    if (!path.isEmpty()) open_file(path);
+}
+
+void MainWindow::export_view() {
+    const QString path = QFileDialog::getSaveFileName(this, "Export view", "view.png", "PNG images (*.png)");
+    if (path.isEmpty() || !active_panel_) return;
+    try {
+        write_png(active_panel_->grab(), path.toStdString());
+        message("wrote " + path, false);
+    } catch (const std::exception& e) {
+        message(QString::fromStdString(e.what()), true);
+    }
+}
+
+void MainWindow::export_matrices(MatrixFormat format, bool to_clipboard) {
+    if (!inspection_) return;
+    const QString text = QString::fromStdString(shadowlab::export_matrices(inspection_->method->name, inspection_->setup, format));
+    if (to_clipboard) {
+        QApplication::clipboard()->setText(text);
+        return message("matrices copied to the clipboard", false);
+    }
+    const char* suffix = format == MatrixFormat::glsl ? "glsl" : format == MatrixFormat::hlsl ? "hlsl" : "json";
+    const QString path = QFileDialog::getSaveFileName(this, "Export matrices", QString("shadow_map.") + suffix);
+    if (path.isEmpty()) return;
+    std::ofstream out(path.toStdString());
+    out << text.toStdString();
+    message(out ? "wrote " + path : "cannot write " + path, !out);
+}
+
+void MainWindow::remember_recent(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value("recentFiles").toStringList();
+    recent.removeAll(QFileInfo(path).absoluteFilePath());
+    recent.prepend(QFileInfo(path).absoluteFilePath());
+    settings.setValue("recentFiles", QStringList(recent.mid(0, kMaxRecent)));
+    rebuild_recent_menu();
+}
+
+void MainWindow::rebuild_recent_menu() {
+    recent_menu_->clear();
+    for (const QString& path : QSettings().value("recentFiles").toStringList())
+        recent_menu_->addAction(path, this, [this, path] { open_file(path); });
+    recent_menu_->setEnabled(!recent_menu_->isEmpty());
+}
+
+void MainWindow::restore_settings() {
+    QSettings settings;
+    restoreGeometry(settings.value("geometry").toByteArray());
+    restoreState(settings.value("windowState").toByteArray());
+    for (size_t i = 0; i < splitters_.size(); ++i)
+        splitters_[i]->restoreState(settings.value(QString("splitter%1").arg(i)).toByteArray());
+    for (size_t i = 0; i < panels_.size(); ++i) {
+        const auto view = view_named(settings.value(QString("panel%1").arg(i)).toString().toStdString());
+        if (view) panels_[i]->set_view(*view);
+    }
+    controls_->set_method(settings.value("method", "focused").toString());
+    controls_->set_resolution(settings.value("resolution", 1024).toInt());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    QSettings settings;
+    settings.setValue("geometry", saveGeometry());
+    settings.setValue("windowState", saveState());
+    for (size_t i = 0; i < splitters_.size(); ++i) settings.setValue(QString("splitter%1").arg(i), splitters_[i]->saveState());
+    for (size_t i = 0; i < panels_.size(); ++i) settings.setValue(QString("panel%1").arg(i), to_string(panels_[i]->view()));
+    const InspectionRequest request = controls_->request();
+    settings.setValue("method", QString::fromStdString(request.method));
+    settings.setValue("resolution", request.resolution);
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (!urls.isEmpty()) open_file(urls.front().toLocalFile());
+}
+
+}  // namespace shadowlab

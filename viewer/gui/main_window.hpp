@@ -1,0 +1,69 @@
+#pragma once
+// The inspector's window: controls on the left, four linked views in the middle, the step player
+// on the right, messages and the plot below. Every change recomputes the method once and redraws
+// all views from that one Inspection.
+#include <optional>
+#include <QMainWindow>
+
+#include "io/matrix_export.hpp"
+#include "model/inspection.hpp"
+
+class QMenu;
+class QPlainTextEdit;
+class QSplitter;
+
+namespace shadowlab {
+
+class ControlsPanel;
+class PlotPanel;
+class StepPlayer;
+class ViewPanel;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+
+    // A scene JSON, or a mesh file (placed on a ground plane, with a camera and a sun). On failure
+    // the message names the file and the field, and the current scene stays.
+    bool open_file(const QString& path);
+
+    const Scene& scene() const { return scene_; }
+    const Inspection* inspection() const { return inspection_ ? &*inspection_ : nullptr; }
+    ControlsPanel* controls() const { return controls_; }
+    StepPlayer* steps() const { return steps_; }
+    const std::vector<ViewPanel*>& panels() const { return panels_; }
+    QString last_message() const { return last_message_; }
+
+protected:
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void build_menus();
+    void recompute();
+    void redraw();
+    void redraw(ViewPanel* panel);
+    void message(const QString& text, bool error);
+    void open_dialog();
+    void export_view();
+    void export_matrices(MatrixFormat format, bool to_clipboard);
+    void remember_recent(const QString& path);
+    void rebuild_recent_menu();
+    void restore_settings();
+
+    Scene scene_;
+    std::optional<Inspection> inspection_;
+    ControlsPanel* controls_;
+    StepPlayer* steps_;
+    PlotPanel* plot_;
+    QPlainTextEdit* messages_;
+    std::vector<ViewPanel*> panels_;
+    std::vector<QSplitter*> splitters_;
+    QMenu* recent_menu_ = nullptr;
+    ViewPanel* active_panel_ = nullptr;
+    QString last_message_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,82 @@
+#include "gui/view_panel.hpp"
+
+#include <QComboBox>
+#include <QImage>
+#include <QVBoxLayout>
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkInteractorStyleImage.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+
+namespace shadowlab {
+
+ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
+    : QWidget(parent), chooser_(new QComboBox(this)), widget_(new QVTKOpenGLNativeWidget(this)) {
+    for (ViewKind v : all_views()) chooser_->addItem(view_title(v), static_cast<int>(v));
+    chooser_->setObjectName("viewChooser");
+    set_view(initial);
+    vtkNew<vtkGenericOpenGLRenderWindow> window;
+    window_ = window;
+    widget_->setRenderWindow(window);
+    widget_->setMinimumSize(200, 150);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addWidget(chooser_);
+    layout->addWidget(widget_, 1);
+    connect(chooser_, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
+
+    // The end of a drag in the Camera view moves the scene's camera.
+    vtkNew<vtkCallbackCommand> on_end;
+    on_end->SetClientData(this);
+    on_end->SetCallback([](vtkObject*, unsigned long, void* self, void*) { static_cast<ViewPanel*>(self)->report_camera(); });
+    window_->GetInteractor()->AddObserver(vtkCommand::EndInteractionEvent, on_end);
+}
+
+ViewKind ViewPanel::view() const { return static_cast<ViewKind>(chooser_->currentData().toInt()); }
+
+void ViewPanel::set_view(ViewKind view) { chooser_->setCurrentIndex(chooser_->findData(static_cast<int>(view))); }
+
+ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& options) {
+    window_->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> renderer;
+    window_->AddRenderer(renderer);
+    ViewOptions sized = options;
+    sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
+    sized.height = std::max(36, static_cast<int>(sized.width / inspection.scene.camera.aspect));
+    const ViewReport report = build_view(renderer, inspection, view(), sized);
+    const bool image = view() == ViewKind::shadow_map || view() == ViewKind::error;
+    if (image)
+        window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleImage>());
+    else
+        window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleTrackballCamera>());
+    widget_->renderWindow()->Render();
+    widget_->update();
+    return report;
+}
+
+void ViewPanel::report_camera() {
+    if (view() != ViewKind::camera) return;
+    vtkRenderer* renderer = window_->GetRenderers()->GetFirstRenderer();
+    if (!renderer) return;
+    vtkCamera* c = renderer->GetActiveCamera();
+    const double* p = c->GetPosition();
+    const double* f = c->GetFocalPoint();
+    const double* u = c->GetViewUp();
+    emit cameraMoved({p[0], p[1], p[2]}, {f[0], f[1], f[2]}, {u[0], u[1], u[2]});
+}
+
+RgbImage ViewPanel::grab() {
+    const QImage frame = widget_->grabFramebuffer().convertToFormat(QImage::Format_RGB888);
+    RgbImage image(frame.width(), frame.height());
+    for (int y = 0; y < frame.height(); ++y)
+        std::copy_n(frame.constScanLine(y), static_cast<size_t>(frame.width()) * 3, image.at(0, y));
+    return image;
+}
+
+}  // namespace shadowlab

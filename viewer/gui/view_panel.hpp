@@ -1,0 +1,38 @@
+#pragma once
+// One view of the window: a chooser for which view it shows, over a VTK widget drawing it.
+#include <QWidget>
+
+#include "render/rgb_image.hpp"
+#include "views/view.hpp"
+
+class QComboBox;
+class QVTKOpenGLNativeWidget;
+class vtkGenericOpenGLRenderWindow;
+
+namespace shadowlab {
+
+class ViewPanel : public QWidget {
+    Q_OBJECT
+public:
+    ViewPanel(ViewKind initial, QWidget* parent = nullptr);
+
+    ViewKind view() const;
+    void set_view(ViewKind view);
+    // Redraws from the inspection; returns what the view could not draw.
+    ViewReport show(const Inspection& inspection, const ViewOptions& options);
+    RgbImage grab();  // what the panel shows now
+
+signals:
+    void viewChosen();
+    // The user moved the camera in the Camera view: its new position, target and up.
+    void cameraMoved(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up);
+
+private:
+    void report_camera();
+
+    QComboBox* chooser_;
+    QVTKOpenGLNativeWidget* widget_;
+    vtkGenericOpenGLRenderWindow* window_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,40 @@
+#include "render/offscreen_view.hpp"
+
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include "render/x_display.hpp"
+
+namespace shadowlab {
+
+RgbImage render_view(const Inspection& inspection, ViewKind view, const ViewOptions& options, int width, int height) {
+    const XDisplay x("views");  // before VTK would open one
+    vtkNew<vtkRenderWindow> window;
+    // No interactor: initializing one syncs with an X window an offscreen render never maps.
+    window->SetInteractor(nullptr);
+    window->SetDisplayId(x.handle());
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);  // pixel tests compare exact colours
+    window->SetSize(width, height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    ViewOptions sized = options;
+    if (sized.width <= 0) sized.width = width, sized.height = height;
+    build_view(renderer, inspection, view, sized);
+    window->Render();
+    RgbImage image = grab(window);
+    window->Finalize();
+    return image;
+}
+
+RgbImage grab(vtkRenderWindow* window) {
+    vtkNew<vtkWindowToImageFilter> filter;
+    filter->SetInput(window);
+    filter->SetInputBufferTypeToRGB();
+    filter->ReadFrontBufferOff();
+    filter->Update();
+    return from_vtk_image(filter->GetOutput());
+}
+
+}  // namespace shadowlab

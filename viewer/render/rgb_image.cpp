@@ -1,0 +1,45 @@
+#include "render/rgb_image.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+
+#include <vtkImageData.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
+
+namespace shadowlab {
+
+vtkSmartPointer<vtkImageData> to_vtk_image(const RgbImage& image) {
+    auto data = vtkSmartPointer<vtkImageData>::New();
+    data->SetDimensions(image.width, image.height, 1);
+    vtkNew<vtkUnsignedCharArray> pixels;
+    pixels->SetNumberOfComponents(3);
+    pixels->SetNumberOfTuples(static_cast<vtkIdType>(image.width) * image.height);
+    const size_t row = static_cast<size_t>(image.width) * 3;
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(image.at(0, image.height - 1 - y), row, pixels->GetPointer(static_cast<vtkIdType>(y * row)));
+    data->GetPointData()->SetScalars(pixels);
+    return data;
+}
+
+RgbImage from_vtk_image(vtkImageData* data) {
+    const int* dims = data->GetDimensions();
+    RgbImage image(dims[0], dims[1]);
+    const auto* pixels = static_cast<const unsigned char*>(data->GetScalarPointer());
+    const size_t row = static_cast<size_t>(dims[0]) * 3;
+    for (int y = 0; y < dims[1]; ++y) std::copy_n(pixels + (dims[1] - 1 - y) * row, row, image.at(0, y));
+    return image;
+}
+
+void write_png(const RgbImage& image, const std::string& file) {
+    if (!std::ofstream(file, std::ios::binary)) throw std::runtime_error("cannot write " + file);
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(file.c_str());
+    writer->SetInputData(to_vtk_image(image));
+    writer->Write();
+    if (writer->GetErrorCode() != 0) throw std::runtime_error("cannot write " + file);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,78 @@
+#pragma once
+// Shadow mapping with a method's own map: any world_to_uvz, perspective warps included. Our own
+// render pass, because vtkShadowMapPass fixes its own light camera.
+//
+// Stage 1 renders the casters' depth into an FBO depth texture with gl_Position = clip(world_to_uvz)
+// (depth clamped, as the CPU rasterizer clamps casters before the near plane). Stage 2 renders the
+// scene through `shade` (normally a vtkRenderStepsPass) and looks each fragment up in that texture,
+// the method's z bias applied before the division by w (XPSM step 18): constant, or slope-scaled
+// per fragment exactly as the CPU metrics compute it.
+#include <vector>
+#include <glm/glm.hpp>
+#include <vtkOpenGLRenderPass.h>
+#include <vtkSmartPointer.h>
+
+class vtkOpaquePass;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkTextureObject;
+
+namespace shadowlab {
+
+class ShadowMapPass : public vtkOpenGLRenderPass {
+public:
+    static ShadowMapPass* New();
+    vtkTypeMacro(ShadowMapPass, vtkOpenGLRenderPass);
+
+    // What stage 2 writes: the lit colour dimmed in shadow, or white where lit and black where shadowed.
+    enum class Output { shaded, lit_mask };
+
+    // The map and its z_bias_scale (depth per world unit along the light, before the division).
+    void SetMap(const glm::dmat4& world_to_uvz, double z_bias_scale, int resolution);
+    // bias: world units along the light, or < 0 for the slope-scaled bias per fragment (as the CPU
+    // metrics use). light: (direction it travels, 0) or (position, 1); eye: the camera's position.
+    void SetBias(double bias, const glm::dvec4& light, const glm::dvec3& eye);
+    void SetCasters(const std::vector<vtkProp*>& casters);  // the props drawn into the map
+    void SetShadePass(vtkRenderPass* shade);
+    void SetOutput(Output output);
+
+    void Render(const vtkRenderState* s) override;
+    void ReleaseGraphicsResources(vtkWindow* w) override;
+    bool PreReplaceShaderValues(std::string& vertex, std::string& geometry, std::string& fragment,
+                                vtkAbstractMapper* mapper, vtkProp* prop) override;
+    bool PostReplaceShaderValues(std::string& vertex, std::string& geometry, std::string& fragment,
+                                 vtkAbstractMapper* mapper, vtkProp* prop) override;
+    bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+                             vtkOpenGLVertexArrayObject* vao) override;
+    vtkMTimeType GetShaderStageMTime() override { return stage_time_.GetMTime(); }
+
+protected:
+    ShadowMapPass();
+    ~ShadowMapPass() override;
+
+private:
+    enum class Stage { depth, shade };
+    void enter(Stage stage);
+    void prepare_targets(vtkOpenGLRenderWindow* window);
+    void render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+    void render_shaded(const vtkRenderState* s);
+
+    Stage stage_ = Stage::shade;
+    vtkTimeStamp stage_time_;
+    Output output_ = Output::shaded;
+    float world_to_uvz_[16] = {};  // column-major, as GLSL reads it
+    float world_to_clip_[16] = {};
+    float z_bias_scale_ = 1.0f;
+    float bias_ = -1.0f;
+    float light_[4] = {0.0f, -1.0f, 0.0f, 0.0f};
+    float eye_[3] = {};
+    int resolution_ = 1024;
+    std::vector<vtkProp*> casters_;
+    vtkSmartPointer<vtkRenderPass> shade_;
+    vtkSmartPointer<vtkOpaquePass> depth_pass_;
+    vtkSmartPointer<vtkOpenGLFramebufferObject> fbo_;
+    vtkSmartPointer<vtkTextureObject> depth_, colour_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,161 @@
+// The World, Light space and PPLS views: the scene, the camera frustum, the method's map volume and
+// its step geometry, all carried into one space by the method's own frames. The chosen step's
+// geometry is drawn bright; what earlier steps built stays, dimmed.
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+
+#include "views/view_parts.hpp"
+
+namespace shadowlab {
+namespace {
+
+const glm::dvec3 kHighlight{1.0, 0.85, 0.1}, kEarlier{0.55, 0.62, 0.78}, kFrustum{1.0, 1.0, 1.0},
+    kMapVolume{0.3, 0.9, 1.0}, kLeftOut{1.0, 0.2, 0.8}, kCasterBox{0.95, 0.55, 0.2}, kReceiverBox{0.4, 0.85, 0.4};
+
+Space space_of(ViewKind view) {
+    return view == ViewKind::world ? Space::world : view == ViewKind::light ? Space::light : Space::ppls;
+}
+
+// World -> `space`, as the method defined it; nullopt when the method has no such space.
+std::optional<glm::dmat4> frame(const Inspection& in, Space space) {
+    if (space == Space::world) return glm::dmat4(1.0);
+    if (space == Space::view && !in.trace.frame(space)) return in.scene.camera.view_matrix();
+    return in.trace.frame(space);
+}
+
+// The cube [0,1]^3 of the map, back in world space: the volume the map covers.
+Frustum map_volume(const ShadowMap& map) {
+    const glm::dmat4 inverse = glm::inverse(map.world_to_uvz);
+    Frustum f{};
+    const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec4 h = inverse * glm::dvec4(corner[i % 4][0], corner[i % 4][1], i < 4 ? 0.0 : 1.0, 1.0);
+        f.corners[i] = glm::dvec3(h) / h.w;
+    }
+    return f;
+}
+
+void add(vtkRenderer* renderer, const Placed& placed, const glm::dvec3& colour, double width, double opacity = 1.0) {
+    auto actor = actor_for(placed, colour);
+    actor->GetProperty()->SetLineWidth(static_cast<float>(width));
+    actor->GetProperty()->SetPointSize(static_cast<float>(2 * width));
+    actor->GetProperty()->SetOpacity(opacity);
+    actor->GetProperty()->SetAmbient(placed.data->GetNumberOfPolys() > 0 ? 0.3 : 1.0);
+    renderer->AddActor(actor);
+}
+
+// The steps up to the chosen one, each in its own space carried into the view's.
+void add_steps(vtkRenderer* renderer, const Inspection& in, const glm::dmat4& to_view, const std::string& chosen,
+               ViewReport& report) {
+    const std::vector<Step>& steps = in.trace.steps();
+    const size_t last = chosen.empty() ? steps.size() - 1
+                                       : static_cast<size_t>(std::find_if(steps.begin(), steps.end(),
+                                                                          [&](const Step& s) { return s.id == chosen; }) -
+                                                             steps.begin());
+    for (size_t i = 0; i <= last && i < steps.size(); ++i) {
+        const auto step_frame = frame(in, steps[i].space);
+        if (!step_frame) continue;
+        const glm::dmat4 to = to_view * glm::inverse(*step_frame);
+        const bool highlight = i == last;
+        for (const NamedGeometry& g : steps[i].geometry) {
+            const Placed placed = geometry_polydata(g.geometry, to, in.inputs.scene_bounds.diagonal());
+            const bool solid = std::holds_alternative<ConvexPolyhedron>(g.geometry) ||
+                               std::holds_alternative<PolygonSet>(g.geometry);
+            add(renderer, placed, highlight ? kHighlight : kEarlier, highlight ? 3.0 : 1.0, solid ? 0.3 : 1.0);
+            if (highlight && placed.dropped)
+                report.notes.push_back(steps[i].id + "/" + g.name + ": " + std::to_string(placed.dropped) +
+                                       " primitives at or behind w = 0 not drawn");
+        }
+    }
+}
+
+// Caster and receiver box corners: those the map leaves outside [0,1]^3 in their own colour.
+// Returns how many were left out.
+size_t add_input_points(vtkRenderer* renderer, const Inspection& in, const glm::dmat4& to_view) {
+    std::vector<glm::dvec3> inside, left_out;
+    for (const auto& points : {in.inputs.caster_points(), in.inputs.receiver_points()})
+        for (const glm::dvec3& p : points) {
+            const glm::dvec4 h = in.map().world_to_uvz * glm::dvec4(p, 1.0);
+            const glm::dvec3 uvz = glm::dvec3(h) / h.w;
+            const bool covered = h.w > 0.0 && glm::all(glm::greaterThanEqual(uvz, glm::dvec3(-1e-6))) &&
+                                 glm::all(glm::lessThanEqual(uvz, glm::dvec3(1.0 + 1e-6)));
+            (covered ? inside : left_out).push_back(p);
+        }
+    add(renderer, points_polydata(inside, to_view), kFrustum, 1.5);
+    add(renderer, points_polydata(left_out, to_view), kLeftOut, 2.5);
+    return left_out.size();
+}
+
+// The light in the world: rays from its side toward the scene's centre (directional), or from
+// its position (spot, point), with the light's end marked.
+void add_light(vtkRenderer* renderer, const Scene& scene) {
+    const Aabb bounds = scene.bounds();
+    const glm::dvec3 centre = 0.5 * (bounds.min + bounds.max);
+    const glm::dvec3 from = scene.light.is_directional() ? centre - 0.6 * bounds.diagonal() * scene.light.direction
+                                                         : scene.light.position;
+    add(renderer, segments_polydata({{from, centre}}, glm::dmat4(1.0)), kHighlight, 3.0);
+    add(renderer, points_polydata({from}, glm::dmat4(1.0)), kHighlight, 6.0);
+}
+
+void add_boxes(vtkRenderer* renderer, const std::vector<Aabb>& boxes, const glm::dmat4& to_view, const glm::dvec3& colour) {
+    for (const Aabb& box : boxes) add(renderer, geometry_polydata(box, to_view), colour, 1.0, 0.6);
+}
+
+// Looks at everything drawn: the world view from behind and above the scene camera, the light
+// spaces from the light's side (their +z runs with the light), slightly tilted to show depth.
+void place_overview_camera(vtkRenderer* renderer, const Inspection& in, ViewKind view) {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    glm::dvec3 direction, up;
+    if (view == ViewKind::world) {
+        const glm::dvec3 d = in.scene.camera.view_direction();
+        direction = glm::normalize(d + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * glm::normalize(glm::cross(d, glm::dvec3(0, 1, 0))));
+        up = {0.0, 1.0, 0.0};
+    } else {
+        direction = glm::normalize(glm::dvec3(0.25, 0.35, 1.0));
+        up = {0.0, 1.0, 0.0};
+    }
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(-direction.x, -direction.y, -direction.z);
+    camera->SetViewUp(up.x, up.y, up.z);
+    renderer->ResetCamera();
+    renderer->ResetCameraClippingRange();
+}
+
+}  // namespace
+
+ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options) {
+    ViewReport report;
+    renderer->SetBackground(0.12, 0.13, 0.16);
+    const auto to_view = frame(in, space_of(view));
+    if (!to_view) {
+        add_caption(renderer, in.method->title + ": no " + view_title(view) + " (the method has no such space)");
+        return report;
+    }
+    const Placed scene = triangles_polydata(in.triangles, std::vector<bool>(in.scene.objects.size(), true),
+                                            object_colours(in.scene), *to_view);
+    add(renderer, scene, glm::dvec3(1.0), 1.0, view == ViewKind::world ? 1.0 : 0.35);
+    if (scene.dropped) report.notes.push_back(std::to_string(scene.dropped) + " scene triangles at or behind w = 0 not drawn");
+    add(renderer, geometry_polydata(in.inputs.frustum, *to_view), kFrustum, 2.0);
+    add(renderer, geometry_polydata(map_volume(in.map()), *to_view), kMapVolume, 2.0);
+    if (view == ViewKind::world) {
+        add_boxes(renderer, in.inputs.casters, *to_view, kCasterBox);
+        add_boxes(renderer, in.inputs.receivers, *to_view, kReceiverBox);
+        add_light(renderer, in.scene);
+    }
+    const size_t left_out = add_input_points(renderer, in, *to_view);
+    add_steps(renderer, in, *to_view, options.step, report);
+    place_overview_camera(renderer, in, view);
+    const std::string step = options.step.empty() ? in.trace.steps().back().id : options.step;
+    add_caption(renderer, std::string(view_title(view)) + " — " + in.method->name + ", step " + step +
+                              " (yellow; earlier steps blue)\nwhite: camera frustum, cyan: the map's volume; box corners "
+                              "inside the map white, outside magenta (" + std::to_string(left_out) + ")");
+    return report;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,131 @@
+#include "views/view.hpp"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkImageActor.h>
+#include <vtkImageData.h>
+#include <vtkImageMapper3D.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkCellData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include "views/view_parts.hpp"
+
+namespace shadowlab {
+namespace {
+
+struct ViewName {
+    ViewKind view;
+    const char* name;
+    const char* title;
+};
+
+constexpr std::array<ViewName, 6> kViews{{{ViewKind::camera, "camera", "Camera"},
+                                          {ViewKind::world, "world", "World"},
+                                          {ViewKind::light, "light", "Light space"},
+                                          {ViewKind::ppls, "ppls", "PPLS"},
+                                          {ViewKind::shadow_map, "shadowmap", "Shadow map"},
+                                          {ViewKind::error, "error", "Error"}}};
+
+const ViewName& entry(ViewKind view) {
+    for (const ViewName& v : kViews)
+        if (v.view == view) return v;
+    throw std::logic_error("unnamed view");
+}
+
+}  // namespace
+
+const char* to_string(ViewKind view) { return entry(view).name; }
+const char* view_title(ViewKind view) { return entry(view).title; }
+
+std::optional<ViewKind> view_named(const std::string& name) {
+    for (const ViewName& v : kViews)
+        if (name == v.name) return v.view;
+    return std::nullopt;
+}
+
+const std::vector<ViewKind>& all_views() {
+    static const std::vector<ViewKind> views = [] {
+        std::vector<ViewKind> out;
+        for (const ViewName& v : kViews) out.push_back(v.view);
+        return out;
+    }();
+    return views;
+}
+
+ViewReport build_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options) {
+    if (!options.step.empty() && !in.trace.find(options.step))
+        throw std::invalid_argument("method " + in.method->name + " has no step '" + options.step + "'");
+    switch (view) {
+        case ViewKind::camera: return build_camera_view(renderer, in, options);
+        case ViewKind::shadow_map: return build_shadow_map_view(renderer, in);
+        case ViewKind::error: return build_error_view(renderer, in, options);
+        default: return build_space_view(renderer, in, view, options);
+    }
+}
+
+vtkSmartPointer<vtkActor> actor_for(const Placed& placed, const glm::dvec3& colour) {
+    auto mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::New();
+    mapper->SetInputData(placed.data);
+    // World coordinates straight to the shaders: the shadow pass reads vertexMC as a world point.
+    mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+    mapper->SetScalarModeToUseCellFieldData();
+    mapper->SelectColorArray("colour");
+    mapper->SetColorModeToDirectScalars();
+    mapper->SetScalarVisibility(placed.data->GetCellData()->GetArray("colour") != nullptr);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(colour.r, colour.g, colour.b);
+    return actor;
+}
+
+void place_scene_camera(vtkRenderer* renderer, const Camera& camera) {
+    vtkCamera* vtk = renderer->GetActiveCamera();
+    vtk->SetPosition(camera.position.x, camera.position.y, camera.position.z);
+    vtk->SetFocalPoint(camera.target.x, camera.target.y, camera.target.z);
+    vtk->SetViewUp(camera.up.x, camera.up.y, camera.up.z);
+    vtk->SetViewAngle(camera.fov_y_deg);
+    vtk->SetClippingRange(camera.near, camera.far);
+}
+
+void show_image(vtkRenderer* renderer, const RgbImage& image) {
+    const int width = image.width, height = image.height;
+    vtkNew<vtkImageActor> actor;
+    actor->GetMapper()->SetInputData(to_vtk_image(image));
+    actor->InterpolateOff();  // texels stay crisp squares when zoomed in
+    renderer->AddActor(actor);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetPosition((width - 1) / 2.0, (height - 1) / 2.0, 10.0 * std::max(width, height));
+    camera->SetFocalPoint((width - 1) / 2.0, (height - 1) / 2.0, 0.0);
+    camera->SetViewUp(0, 1, 0);
+    // Fit the whole image: by its height, or by its width in a window narrower than the image.
+    double window_aspect = static_cast<double>(width) / height;
+    if (const int* size = renderer->GetRenderWindow() ? renderer->GetRenderWindow()->GetSize() : nullptr;
+        size && size[0] > 0 && size[1] > 0)
+        window_aspect = static_cast<double>(size[0]) / size[1];
+    camera->SetParallelScale(std::max(height / 2.0, width / (2.0 * window_aspect)));
+    renderer->ResetCameraClippingRange();
+}
+
+void add_caption(vtkRenderer* renderer, const std::string& text) {
+    vtkNew<vtkTextActor> caption;
+    caption->SetInput(text.c_str());
+    caption->GetTextProperty()->SetFontSize(14);
+    caption->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+    caption->GetTextProperty()->SetBackgroundColor(0.0, 0.0, 0.0);
+    caption->GetTextProperty()->SetBackgroundOpacity(0.5);
+    caption->SetDisplayPosition(8, 8);
+    renderer->AddViewProp(caption);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,36 @@
+#pragma once
+// The inspector's views, each drawn into a VTK renderer from one Inspection: the same code serves
+// the window and `shadowlab render`.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/inspection.hpp"
+
+class vtkRenderer;
+
+namespace shadowlab {
+
+enum class ViewKind { camera, world, light, ppls, shadow_map, error };
+
+const char* to_string(ViewKind view);                          // as on the command line: "shadowmap"
+const char* view_title(ViewKind view);                         // as in the window: "Shadow map"
+std::optional<ViewKind> view_named(const std::string& name);  // nullopt for an unknown name
+const std::vector<ViewKind>& all_views();
+
+struct ViewOptions {
+    std::string step;       // the trace step to highlight; empty: the method's last step
+    bool lit_mask = false;  // camera view: white where lit, black where shadowed, unlit colours
+    int width = 0, height = 0;  // error view: the camera image it measures (0: 640 x 640 / aspect)
+};
+
+// What a view could not draw, for the window's status line: "12 triangles behind w = 0 left out".
+struct ViewReport {
+    std::vector<std::string> notes;
+};
+
+// Fills an empty renderer with the view and places its camera. The camera view installs a
+// ShadowMapPass on the renderer. Throws std::invalid_argument for a step id the trace lacks.
+ViewReport build_view(vtkRenderer* renderer, const Inspection& inspection, ViewKind view, const ViewOptions& options);
+
+}  // namespace shadowlab

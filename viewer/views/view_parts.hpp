@@ -1,0 +1,26 @@
+#pragma once
+// One builder per view (views/*_view.cpp), dispatched by build_view.
+#include <glm/glm.hpp>
+#include <vtkSmartPointer.h>
+
+#include "render/rgb_image.hpp"
+#include "views/polydata.hpp"
+#include "views/view.hpp"
+
+class vtkActor;
+class vtkRenderer;
+
+namespace shadowlab {
+
+ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
+ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options);
+ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in);
+ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
+
+// Shared by the builders.
+vtkSmartPointer<vtkActor> actor_for(const Placed& placed, const glm::dvec3& colour);
+void place_scene_camera(vtkRenderer* renderer, const Camera& camera);  // the VTK camera = the scene's
+void show_image(vtkRenderer* renderer, const RgbImage& image);  // one screen square per pixel, crisp
+void add_caption(vtkRenderer* renderer, const std::string& text);
+
+}  // namespace shadowlab
