@@ -83,6 +83,17 @@ private slots:
         QCOMPARE(QString::fromStdString(window_->scene().name), QString("tetrahedron"));
     }
 
+    void draggingTheLightHandleTurnsTheLight() {
+        ViewPanel* world = panel_showing(ViewKind::world);
+        ViewPanel* camera = panel_showing(ViewKind::camera);
+        const RgbImage before = camera->grab();
+        emit world->lightHandleMoved({30.0, 8.0, 0.0});  // dropped low on +x: the light now runs toward -x
+        QApplication::processEvents();
+        const glm::dvec3 d = window_->scene().light.direction;
+        QVERIFY2(d.x < -0.9 && d.y < 0.0, qPrintable(QString("light direction %1 %2 %3").arg(d.x).arg(d.y).arg(d.z)));
+        QVERIFY2(changed_share(before, camera->grab()) > 0.01, "the shadows did not move");
+    }
+
     void choosingAStepHighlightsItsGeometry() {
         ViewPanel* world = panel_showing(ViewKind::world);
         const RgbImage last = world->grab();

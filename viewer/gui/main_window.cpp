@@ -68,6 +68,11 @@ MainWindow::MainWindow(QWidget* parent)
                         scene_.camera.position = p, scene_.camera.target = t, scene_.camera.up = u;
                         recompute();
                     });
+            connect(panel, &ViewPanel::cameraHandleMoved, this, [this](const glm::dvec3& position) {
+                if (glm::length(scene_.camera.target - position) > 0.0) scene_.camera.position = position;
+                recompute();
+            });
+            connect(panel, &ViewPanel::lightHandleMoved, this, [this](const glm::dvec3& point) { move_light_to(point); });
         }
         splitters_.push_back(row);
     }
@@ -164,6 +169,18 @@ void MainWindow::recompute() {
             message(QString("plot: ") + e.what(), true);
         }
     }
+}
+
+// A directional light now shines from `point` toward the scene's centre; others move there.
+void MainWindow::move_light_to(const glm::dvec3& point) {
+    const Aabb bounds = scene_.bounds();
+    const glm::dvec3 towards = 0.5 * (bounds.min + bounds.max) - point;
+    if (!scene_.light.is_directional())
+        scene_.light.position = point;
+    else if (glm::length(towards) > 0.0)
+        scene_.light.direction = glm::normalize(towards);
+    controls_->set_light_direction(scene_.light.direction);
+    recompute();
 }
 
 void MainWindow::redraw() {

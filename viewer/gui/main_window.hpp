@@ -43,6 +43,7 @@ protected:
 private:
     void build_menus();
     void recompute();
+    void move_light_to(const glm::dvec3& point);
     void redraw();
     void redraw(ViewPanel* panel);
     void message(const QString& text, bool error);

@@ -3,10 +3,15 @@
 #include <QComboBox>
 #include <QImage>
 #include <QVBoxLayout>
+#include <glm/gtc/type_ptr.hpp>
+#include <tuple>
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkHandleWidget.h>
+#include <vtkProperty.h>
+#include <vtkSphereHandleRepresentation.h>
 #include <vtkInteractorStyleImage.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderWindowInteractor.h>
@@ -55,9 +60,43 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
         window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleImage>());
     else
         window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleTrackballCamera>());
+    handles_.clear();
+    if (view() == ViewKind::world) add_world_handles(inspection);
     widget_->renderWindow()->Render();
     widget_->update();
     return report;
+}
+
+// Two draggable handles in the World view: the light (where its marker is drawn) and the camera.
+void ViewPanel::add_world_handles(const Inspection& in) {
+    const Aabb bounds = in.scene.bounds();
+    const glm::dvec3 centre = 0.5 * (bounds.min + bounds.max);
+    const Light& light = in.scene.light;
+    const glm::dvec3 light_at = light.is_directional() ? centre - 0.6 * bounds.diagonal() * light.direction : light.position;
+    const double size = 0.04 * bounds.diagonal();
+    for (const auto& [at, colour, is_light] : {std::tuple{light_at, glm::dvec3(1.0, 0.85, 0.1), true},
+                                               std::tuple{in.scene.camera.position, glm::dvec3(1.0, 1.0, 1.0), false}}) {
+        vtkNew<vtkSphereHandleRepresentation> representation;
+        representation->SetWorldPosition(const_cast<double*>(glm::value_ptr(at)));
+        representation->SetHandleSize(size);
+        representation->GetProperty()->SetColor(colour.r, colour.g, colour.b);
+        auto handle = vtkSmartPointer<vtkHandleWidget>::New();
+        handle->SetInteractor(window_->GetInteractor());
+        handle->SetRepresentation(representation);
+        handle->SetCurrentRenderer(window_->GetRenderers()->GetFirstRenderer());
+        handle->EnabledOn();
+        vtkNew<vtkCallbackCommand> on_end;
+        on_end->SetClientData(this);
+        on_end->SetCallback(is_light ? [](vtkObject* caller, unsigned long, void* self, void*) {
+            const double* p = static_cast<vtkHandleWidget*>(caller)->GetHandleRepresentation()->GetWorldPosition();
+            emit static_cast<ViewPanel*>(self)->lightHandleMoved({p[0], p[1], p[2]});
+        } : [](vtkObject* caller, unsigned long, void* self, void*) {
+            const double* p = static_cast<vtkHandleWidget*>(caller)->GetHandleRepresentation()->GetWorldPosition();
+            emit static_cast<ViewPanel*>(self)->cameraHandleMoved({p[0], p[1], p[2]});
+        });
+        handle->AddObserver(vtkCommand::EndInteractionEvent, on_end);
+        handles_.push_back(handle);
+    }
 }
 
 void ViewPanel::report_camera() {

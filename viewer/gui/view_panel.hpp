@@ -1,6 +1,8 @@
 #pragma once
 // One view of the window: a chooser for which view it shows, over a VTK widget drawing it.
+#include <vector>
 #include <QWidget>
+#include <vtkSmartPointer.h>
 
 #include "render/rgb_image.hpp"
 #include "views/view.hpp"
@@ -8,6 +10,7 @@
 class QComboBox;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
+class vtkHandleWidget;
 
 namespace shadowlab {
 
@@ -26,10 +29,16 @@ signals:
     void viewChosen();
     // The user moved the camera in the Camera view: its new position, target and up.
     void cameraMoved(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up);
+    // The user dragged a handle in the World view: the light's (the world point it now sits at)
+    // or the camera's (its new position; the target stays).
+    void lightHandleMoved(const glm::dvec3& point);
+    void cameraHandleMoved(const glm::dvec3& position);
 
 private:
     void report_camera();
+    void add_world_handles(const Inspection& inspection);
 
+    std::vector<vtkSmartPointer<vtkHandleWidget>> handles_;
     QComboBox* chooser_;
     QVTKOpenGLNativeWidget* widget_;
     vtkGenericOpenGLRenderWindow* window_;

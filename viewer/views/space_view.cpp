@@ -107,24 +107,37 @@ void add_boxes(vtkRenderer* renderer, const std::vector<Aabb>& boxes, const glm:
     for (const Aabb& box : boxes) add(renderer, geometry_polydata(box, to_view), colour, 1.0, 0.6);
 }
 
-// Looks at everything drawn: the world view from behind and above the scene camera, the light
-// spaces from the light's side (their +z runs with the light), slightly tilted to show depth.
-void place_overview_camera(vtkRenderer* renderer, const Inspection& in, ViewKind view) {
-    vtkCamera* camera = renderer->GetActiveCamera();
-    glm::dvec3 direction, up;
+// What the camera frames: the scene in the world; in the light spaces the map's volume, since
+// points near w = 0 fly off toward infinity there.
+Aabb framed_region(const Inspection& in, ViewKind view, const glm::dmat4& to_view) {
+    if (view == ViewKind::world) return in.scene.bounds();
+    Aabb box;
+    for (const glm::dvec3& corner : map_volume(in.map()).corners) {
+        const glm::dvec4 h = to_view * glm::dvec4(corner, 1.0);
+        if (h.w > 0.0) box.extend(glm::dvec3(h) / h.w);
+    }
+    return box.empty() ? in.scene.bounds() : box;
+}
+
+// The world view from behind, above and beside the scene camera; the light spaces from the
+// light's side (their +z runs with the light), slightly tilted to show depth.
+void place_overview_camera(vtkRenderer* renderer, const Inspection& in, ViewKind view, const Aabb& region) {
+    glm::dvec3 direction{0.25, 0.35, 1.0};
     if (view == ViewKind::world) {
         const glm::dvec3 d = in.scene.camera.view_direction();
-        direction = glm::normalize(d + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * glm::normalize(glm::cross(d, glm::dvec3(0, 1, 0))));
-        up = {0.0, 1.0, 0.0};
-    } else {
-        direction = glm::normalize(glm::dvec3(0.25, 0.35, 1.0));
-        up = {0.0, 1.0, 0.0};
+        direction = d + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * glm::normalize(glm::cross(d, glm::dvec3(0, 1, 0)));
     }
+    direction = glm::normalize(direction);
+    vtkCamera* camera = renderer->GetActiveCamera();
     camera->SetFocalPoint(0.0, 0.0, 0.0);
     camera->SetPosition(-direction.x, -direction.y, -direction.z);
-    camera->SetViewUp(up.x, up.y, up.z);
-    renderer->ResetCamera();
-    renderer->ResetCameraClippingRange();
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    double bounds[6] = {region.min.x, region.max.x, region.min.y, region.max.y, region.min.z, region.max.z};
+    renderer->ResetCamera(bounds);
+    const glm::dvec3 centre = 0.5 * (region.min + region.max), reach = 4.0 * (region.max - region.min);
+    double far_bounds[6] = {centre.x - reach.x, centre.x + reach.x, centre.y - reach.y,
+                            centre.y + reach.y, centre.z - reach.z, centre.z + reach.z};
+    renderer->ResetCameraClippingRange(far_bounds);
 }
 
 }  // namespace
@@ -150,7 +163,7 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKin
     }
     const size_t left_out = add_input_points(renderer, in, *to_view);
     add_steps(renderer, in, *to_view, options.step, report);
-    place_overview_camera(renderer, in, view);
+    place_overview_camera(renderer, in, view, framed_region(in, view, *to_view));
     const std::string step = options.step.empty() ? in.trace.steps().back().id : options.step;
     add_caption(renderer, std::string(view_title(view)) + " — " + in.method->name + ", step " + step +
                               " (yellow; earlier steps blue)\nwhite: camera frustum, cyan: the map's volume; box corners "
