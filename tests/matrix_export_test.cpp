@@ -2,6 +2,7 @@
 #include <regex>
 #include <gtest/gtest.h>
 
+#include "io/inspection_json.hpp"
 #include "io/matrix_export.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
@@ -22,7 +23,7 @@ std::vector<double> numbers_between(const std::string& text, const std::string& 
 
 ShadowSetup lispsm_setup() {
     const Method& method = *find_method("lispsm");
-    return method.compute(gather_inputs(load_scene(testing::source_path("data/scenes/box_on_plane.json"))),
+    return method.compute(gather_inputs(load_scene(shadowlab::testing::source_path("data/scenes/box_on_plane.json"))),
                           resolve_settings(method.name, method.settings, {}), nullptr);
 }
 

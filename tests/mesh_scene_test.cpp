@@ -9,7 +9,7 @@
 using namespace shadowlab;
 
 TEST(MeshScene, MeshStandsOnTheGroundInFrontOfTheCamera) {
-    const Scene scene = scene_around_mesh(testing::source_path("data/meshes/tetrahedron.obj"));
+    const Scene scene = scene_around_mesh(shadowlab::testing::source_path("data/meshes/tetrahedron.obj"));
     ASSERT_EQ(scene.objects.size(), 2u);
     const Aabb mesh = scene.objects[1].world_bounds();
     EXPECT_DOUBLE_EQ(scene.objects[0].world_bounds().min.y, mesh.min.y);

@@ -82,7 +82,9 @@ MainWindow::MainWindow(QWidget* parent)
 
     addDockWidget(Qt::LeftDockWidgetArea, dock("Controls", "controlsDock", controls_, this));
     addDockWidget(Qt::RightDockWidgetArea, dock("Steps", "stepsDock", steps_, this));
-    addDockWidget(Qt::BottomDockWidgetArea, dock("Messages", "messagesDock", messages_, this));
+    QDockWidget* messages_dock = dock("Messages", "messagesDock", messages_, this);
+    addDockWidget(Qt::BottomDockWidgetArea, messages_dock);
+    resizeDocks({messages_dock}, {110}, Qt::Vertical);  // the views get the height
     QDockWidget* plot_dock = dock("Plot", "plotDock", plot_, this);
     addDockWidget(Qt::BottomDockWidgetArea, plot_dock);
     plot_dock->hide();  // measured on demand: View > Plot
