@@ -51,10 +51,6 @@ TEST_P(MethodOnScene, ShadowableVisiblePointsMapIntoTheUnitCube) {
     const auto& [method_name, file] = GetParam();
     const ShadowInputs in = gather_inputs(load_scene(file));
     if (!in.light.is_directional()) GTEST_SKIP() << "perspective light maps are checked by the depth test";
-    if (method_name == "xpsm" && file.find("volumes_eye_in_shadow") != std::string::npos)
-        GTEST_SKIP() << "KNOWN DEFECT, to fix: XPSM leaves visible receivers out at step 11 (w < epsilonW) and names no "
-                        "fallback when a caster stands behind the viewer and the light comes from behind: about 70% "
-                        "false light on this scene (shadowlab measure ... --method xpsm)";
     const ShadowSetup setup = run(*find_method(method_name), in);
     const std::vector<glm::dvec3> points = shadowable_visible_points(in);
     for (const glm::dvec3& p : points) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/convex_polyhedron.hpp"
 #include "math/matrix.hpp"
 #include "methods/fallbacks.hpp"
 #include "methods/light_fit.hpp"
@@ -25,6 +26,7 @@ double min_projection(const std::vector<glm::dvec3>& light_points, const glm::dv
 struct Warp {
     glm::dvec2 unit_p;
     double length_p;
+    double min_focus_proj;  // max(minCastersProj, minReceiversProj): where the focus interval starts
 };
 
 // Steps 4 to 7: the projection vector's length, clipped away from the singularity at w = 0.
@@ -36,7 +38,7 @@ Warp projection_vector(const glm::dvec2& unit_p, double cos_gamma, const std::ve
     const double max_length_p = (epsilon_w - 1.0) / std::max(min_casters, min_receivers);  // step 5
     const double optimal = coef / cos_gamma;                                                // step 6
     const bool clipped = max_length_p > 0.0 && optimal > max_length_p;                     // step 7
-    const Warp warp{unit_p, clipped ? max_length_p : optimal};
+    const Warp warp{unit_p, clipped ? max_length_p : optimal, std::max(min_casters, min_receivers)};
     record(trace, [&](Trace& t) {
         t.add("xpsm-4", "minCastersProj, minReceiversProj", "min over light-space points of p.xy · unitP",
               Space::light)
@@ -68,6 +70,46 @@ glm::dmat4 ppls_transform(const Warp& w, Trace* trace) {
               Space::ppls).value("PPLS_Transform", ppls);
     });
     return ppls;
+}
+
+// Where the focus interval starts (seed 3.3: below max(minCastersProj, minReceiversProj) on unitP
+// no receiver has a caster above it, nor a caster a receiver below it), as a world plane whose
+// kept side is p.xy · unitP >= minFocusRegionProj; there w >= εW.
+Plane focus_start(const glm::dmat4& light_space, const Warp& warp) {
+    const glm::dvec4 along = warp.unit_p.x * row(light_space, 0) + warp.unit_p.y * row(light_space, 1);
+    const double length = glm::length(glm::dvec3(along));
+    return {-glm::dvec3(along) / length, (warp.min_focus_proj - along.w) / length};
+}
+
+double tolerance_for(const Aabb& box) { return 1e-12 * (1.0 + box.diagonal()); }
+
+// Step 11 for boxes (corners_within gives 8 world corners per box): each box is cut where the
+// focus interval starts and what stays is projected. Leaving out single corners instead (w < εW)
+// would shrink a box that crosses that line to its far corners, and the focus region could miss
+// receivers a caster shadows.
+ProjectedPoints project_boxes(const std::vector<glm::dvec3>& corners, const Plane& start, const glm::dmat4& to_ppls,
+                              double min_w) {
+    ProjectedPoints out;
+    for (size_t i = 0; i + 8 <= corners.size(); i += 8) {
+        const std::vector<glm::dvec3> box_corners(corners.begin() + i, corners.begin() + i + 8);
+        const Aabb box = bounds_of(box_corners);
+        const ConvexPolyhedron kept = clip(ConvexPolyhedron::box(box), start, tolerance_for(box));
+        out.left_out += project(box_corners, to_ppls, min_w).left_out;
+        const std::vector<glm::dvec3>& points = kept.empty() ? box_corners : kept.vertices;  // a flat box stays corners
+        const ProjectedPoints projected = project(points, to_ppls, min_w);
+        out.points.insert(out.points.end(), projected.points.begin(), projected.points.end());
+    }
+    return out;
+}
+
+// The receivers' PPLS box, kept within the visible region's: receiver boxes reach behind the
+// viewer, where PPLS stretches toward w = εW, but only what the camera sees needs the map.
+Aabb visible_receivers_box(const Aabb& receivers_box, const ConvexPolyhedron& visible, const Plane& start,
+                           const glm::dmat4& to_ppls, double min_w) {
+    const ConvexPolyhedron seen = clip(visible, start, tolerance_for(visible.bounds()));
+    if (seen.empty()) return receivers_box;
+    const Aabb seen_box = bounds_of(project(seen.vertices, to_ppls, min_w).points);
+    return {glm::max(receivers_box.min, seen_box.min), glm::min(receivers_box.max, seen_box.max)};
 }
 
 }  // namespace
@@ -113,22 +155,28 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
     const glm::dmat4 ppls = ppls_transform(warp, trace);
     record(trace, [&](Trace& t) { t.set_frame(Space::ppls, ppls * light_space); });
 
-    // Steps 11 and 12: PPLS points (w < εW left out) and their boxes.
+    // Steps 11 and 12: PPLS points (boxes cut at w = εW) and their boxes.
     const double min_w = s.number("epsilonW") * (1.0 - 1e-9);  // the extreme point itself stays in
-    const ProjectedPoints ppls_casters = project(light_casters, ppls, min_w);
-    const ProjectedPoints ppls_receivers = project(light_receivers, ppls, min_w);
-    const Aabb casters_box = bounds_of(ppls_casters.points), receivers_box = bounds_of(ppls_receivers.points);
+    const Plane start = focus_start(light_space, warp);
+    const ProjectedPoints ppls_casters = project_boxes(casters, start, ppls * light_space, min_w);
+    const ProjectedPoints ppls_receivers = project_boxes(receivers, start, ppls * light_space, min_w);
+    const Aabb casters_box = bounds_of(ppls_casters.points);
+    const Aabb receivers_box = visible_receivers_box(bounds_of(ppls_receivers.points), body->visible, start,
+                                                     ppls * light_space, min_w);
     // Step 13: FocusRegion, the xy intersection of the two boxes.
     const glm::dvec2 focus_min = glm::max(glm::dvec2(casters_box.min), glm::dvec2(receivers_box.min));
     const glm::dvec2 focus_max = glm::min(glm::dvec2(casters_box.max), glm::dvec2(receivers_box.max));
     record(trace, [&](Trace& t) {
-        t.add("xpsm-11", "PPLS Casters and Receivers", "points * LightSpace * PPLS Transform; w < εW left out",
+        t.add("xpsm-11", "PPLS Casters and Receivers",
+              "points * LightSpace * PPLS Transform, boxes cut where the focus interval starts; corners with w < εW "
+              "counted as left out",
               Space::ppls)
             .value("casters_left_out", double(ppls_casters.left_out))
             .value("receivers_left_out", double(ppls_receivers.left_out))
             .shape("PPLS Casters", PointSet{ppls_casters.points})
             .shape("PPLS Receivers", PointSet{ppls_receivers.points});
-        t.add("xpsm-12", "PPLS CastersBox, ReceiversBox", "AABBs of the PPLS points", Space::ppls)
+        t.add("xpsm-12", "PPLS CastersBox, ReceiversBox",
+              "AABBs of the PPLS points; the receivers' kept within the visible region's", Space::ppls)
             .shape("PPLS CastersBox", casters_box).shape("PPLS ReceiversBox", receivers_box);
         t.add("xpsm-13", "FocusRegion", "Intersect 2D (PPLS CastersBox, PPLS ReceiversBox)", Space::ppls)
             .value("MinPoint", focus_min).value("MaxPoint", focus_max);
