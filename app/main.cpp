@@ -15,6 +15,8 @@
 
 namespace {
 
+constexpr const char* kMethodNames = "uniform | focused | psm | lispsm | tsm | xpsm | volumes | planar";
+
 // The bundled scene: next to the sources in a build tree, or ./data from the repository root.
 std::string default_scene() {
     for (const std::filesystem::path dir : {std::filesystem::path(SHADOWLAB_DATA_DIR), std::filesystem::path("data")})
@@ -51,7 +53,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> set_pairs;
     CLI::App* inspect_cmd = app.add_subcommand("inspect", "print a method's steps, matrices and fallbacks for a scene");
     inspect_cmd->add_option("scene", inspect.scene_file, "scene file (JSON)")->required();
-    inspect_cmd->add_option("--method,-m", inspect.method, "uniform | focused")->capture_default_str();
+    inspect_cmd->add_option("--method,-m", inspect.method, kMethodNames)->capture_default_str();
     inspect_cmd->add_option("--set", set_pairs, "a method setting, key=value (repeatable)");
     inspect_cmd->add_flag("--json", inspect.json, "print one JSON object instead of text");
 
@@ -60,7 +62,7 @@ int main(int argc, char** argv) {
     std::string size = "1280x720";
     CLI::App* measure_cmd = app.add_subcommand("measure", "a method's error against the exact reference, and its cost");
     measure_cmd->add_option("scene", measure.scene_file, "scene file (JSON)")->required();
-    measure_cmd->add_option("--method,-m", measure.method, "method name")->capture_default_str();
+    measure_cmd->add_option("--method,-m", measure.method, kMethodNames)->capture_default_str();
     measure_cmd->add_option("--resolution,-r", measure.resolution, "shadow map resolution (texels per side)")->capture_default_str();
     measure_cmd->add_option("--size", size, "camera image size WxH")->capture_default_str();
     measure_cmd->add_option("--bias", measure.bias, "depth bias in world units along the light (default: slope-scaled per pixel)");
@@ -90,7 +92,7 @@ int main(int argc, char** argv) {
     std::string render_size = "1280x720";
     CLI::App* render_cmd = app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
     render_cmd->add_option("scene", render.scene_file, "scene file (JSON)")->required();
-    render_cmd->add_option("--method,-m", render.method, "method name")->capture_default_str();
+    render_cmd->add_option("--method,-m", render.method, kMethodNames)->capture_default_str();
     render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | error")->capture_default_str();
     render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
     render_cmd->add_option("--size", render_size, "image size WxH")->capture_default_str();
