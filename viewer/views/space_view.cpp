@@ -1,6 +1,8 @@
 // The World, Light space and PPLS views: the scene, the camera frustum, the method's map volume and
 // its step geometry, all carried into one space by the method's own frames. The chosen step's
-// geometry is drawn bright; what earlier steps built stays, dimmed.
+// geometry is drawn bright; what earlier steps built stays, dimmed. A geometric technique has no
+// map and no light spaces: the World view shows its steps (silhouette edges thick on the meshes,
+// extruded quads and caps translucent, vertices at infinity drawn a scene's length away).
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -67,7 +69,10 @@ void add_steps(vtkRenderer* renderer, const Inspection& in, const glm::dmat4& to
             const Placed placed = geometry_polydata(g.geometry, to, in.inputs.scene_bounds.diagonal());
             const bool solid = std::holds_alternative<ConvexPolyhedron>(g.geometry) ||
                                std::holds_alternative<PolygonSet>(g.geometry);
-            add(renderer, placed, highlight ? kHighlight : kEarlier, highlight ? 3.0 : 1.0, solid ? 0.3 : 1.0);
+            // Edges (silhouettes) stay thick after their step: they lie on the meshes' own edges.
+            const double width = std::holds_alternative<SegmentSet>(g.geometry) ? (highlight ? 5.0 : 3.0)
+                                                                                 : (highlight ? 3.0 : 1.0);
+            add(renderer, placed, highlight ? kHighlight : kEarlier, width, solid ? 0.3 : 1.0);
             if (highlight && placed.dropped)
                 report.notes.push_back(steps[i].id + "/" + g.name + ": " + std::to_string(placed.dropped) +
                                        " primitives at or behind w = 0 not drawn");
@@ -107,13 +112,26 @@ void add_boxes(vtkRenderer* renderer, const std::vector<Aabb>& boxes, const glm:
     for (const Aabb& box : boxes) add(renderer, geometry_polydata(box, to_view), colour, 1.0, 0.6);
 }
 
-// What the camera frames: the scene in the world; in the light spaces the map's volume, since
-// points near w = 0 fly off toward infinity there.
+// The casters' boxes together: where a technique's silhouettes and volumes start.
+Aabb casters_region(const Inspection& in) {
+    Aabb box;
+    for (const Aabb& caster : in.inputs.casters) box.extend(caster);
+    return box.empty() ? in.scene.bounds() : box;
+}
+
+// What the camera frames: the scene in the world; in the light spaces the intersection body (what
+// the method works on; the scene's bounds for methods without one), since points near w = 0 fly
+// off toward infinity there and a warp's map volume reaches far beyond the scene.
 Aabb framed_region(const Inspection& in, ViewKind view, const glm::dmat4& to_view) {
     if (view == ViewKind::world) return in.scene.bounds();
+    const Step* body_step = in.trace.find("body");
+    const auto* body = body_step && !body_step->geometry.empty()
+                           ? std::get_if<ConvexPolyhedron>(&body_step->geometry.front().geometry) : nullptr;
+    const auto corners = in.scene.bounds().corners();
+    const std::vector<glm::dvec3> points = body ? body->vertices : std::vector<glm::dvec3>(corners.begin(), corners.end());
     Aabb box;
-    for (const glm::dvec3& corner : map_volume(in.map()).corners) {
-        const glm::dvec4 h = to_view * glm::dvec4(corner, 1.0);
+    for (const glm::dvec3& p : points) {
+        const glm::dvec4 h = to_view * glm::dvec4(p, 1.0);
         if (h.w > 0.0) box.extend(glm::dvec3(h) / h.w);
     }
     return box.empty() ? in.scene.bounds() : box;
@@ -147,7 +165,9 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKin
     renderer->SetBackground(0.12, 0.13, 0.16);
     const auto to_view = frame(in, space_of(view));
     if (!to_view) {
-        add_caption(renderer, in.method->title + ": no " + view_title(view) + " (the method has no such space)");
+        add_caption(renderer, in.title() + ": no " + view_title(view) +
+                                  (in.has_map() ? " (the method has no such space)"
+                                                : " (a geometric technique: no light space, no map; see the World view)"));
         return report;
     }
     const Placed scene = triangles_polydata(in.triangles, std::vector<bool>(in.scene.objects.size(), true),
@@ -155,19 +175,21 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKin
     add(renderer, scene, glm::dvec3(1.0), 1.0, view == ViewKind::world ? 1.0 : 0.35);
     if (scene.dropped) report.notes.push_back(std::to_string(scene.dropped) + " scene triangles at or behind w = 0 not drawn");
     add(renderer, geometry_polydata(in.inputs.frustum, *to_view), kFrustum, 2.0);
-    add(renderer, geometry_polydata(map_volume(in.map()), *to_view), kMapVolume, 2.0);
+    if (in.has_map()) add(renderer, geometry_polydata(map_volume(in.map()), *to_view), kMapVolume, 2.0);
     if (view == ViewKind::world) {
         add_boxes(renderer, in.inputs.casters, *to_view, kCasterBox);
         add_boxes(renderer, in.inputs.receivers, *to_view, kReceiverBox);
         add_light(renderer, in.scene);
     }
-    const size_t left_out = add_input_points(renderer, in, *to_view);
+    const size_t left_out = in.has_map() ? add_input_points(renderer, in, *to_view) : 0;
     add_steps(renderer, in, *to_view, options.step, report);
     place_overview_camera(renderer, in, view, framed_region(in, view, *to_view));
     const std::string step = options.step.empty() ? in.trace.steps().back().id : options.step;
-    add_caption(renderer, std::string(view_title(view)) + " — " + in.method->name + ", step " + step +
-                              " (yellow; earlier steps blue)\nwhite: camera frustum, cyan: the map's volume; box corners "
-                              "inside the map white, outside magenta (" + std::to_string(left_out) + ")");
+    const std::string legend = in.has_map() ? "white: camera frustum, cyan: the map's volume; box corners inside the map "
+                                              "white, outside magenta (" + std::to_string(left_out) + ")"
+                                            : "white: camera frustum; no map (a geometric technique)";
+    add_caption(renderer, std::string(view_title(view)) + " — " + in.name() + ", step " + step +
+                              " (yellow; earlier steps blue)\n" + legend);
     return report;
 }
 
