@@ -90,14 +90,22 @@ double tolerance_for(const Aabb& box) { return 1e-12 * (1.0 + box.diagonal()); }
 ProjectedPoints project_boxes(const std::vector<glm::dvec3>& corners, const Plane& start, const glm::dmat4& to_ppls,
                               double min_w) {
     ProjectedPoints out;
+    out.points.reserve(corners.size());
+    auto add = [&](const glm::dvec3& p, bool keep) {
+        const glm::dvec4 h = to_ppls * glm::dvec4(p, 1.0);
+        if (h.w < min_w) ++out.left_out;  // counted for the trace, as the seed leaves such points out
+        else if (keep) out.points.push_back(glm::dvec3(h) / h.w);
+    };
     for (size_t i = 0; i + 8 <= corners.size(); i += 8) {
-        const std::vector<glm::dvec3> box_corners(corners.begin() + i, corners.begin() + i + 8);
-        const Aabb box = bounds_of(box_corners);
-        const ConvexPolyhedron kept = clip(ConvexPolyhedron::box(box), start, tolerance_for(box));
-        out.left_out += project(box_corners, to_ppls, min_w).left_out;
-        const std::vector<glm::dvec3>& points = kept.empty() ? box_corners : kept.vertices;  // a flat box stays corners
-        const ProjectedPoints projected = project(points, to_ppls, min_w);
-        out.points.insert(out.points.end(), projected.points.begin(), projected.points.end());
+        const glm::dvec3* box = &corners[i];
+        double lo = INFINITY, hi = -INFINITY;
+        for (int k = 0; k < 8; ++k) lo = std::min(lo, start.signed_distance(box[k])), hi = std::max(hi, start.signed_distance(box[k]));
+        const bool crosses = lo <= 0.0 && hi > 0.0;  // only these boxes are cut
+        const ConvexPolyhedron kept = crosses ? clip(ConvexPolyhedron::box(bounds_of({box, box + 8})), start,
+                                                     tolerance_for(bounds_of({box, box + 8})))
+                                              : ConvexPolyhedron{};
+        for (int k = 0; k < 8; ++k) add(box[k], hi <= 0.0 || (crosses && kept.empty()));  // a flat box stays corners
+        for (const glm::dvec3& p : kept.vertices) add(p, true);
     }
     return out;
 }
