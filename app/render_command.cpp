@@ -30,15 +30,19 @@ void run_render(const RenderOptions& options) {
     request.settings = options.settings;
     request.resolution = options.resolution;
     request.bias = options.bias;
+    request.image_width = options.width;  // a technique judges the pixels of this very image
+    request.image_height = options.height;
     const Inspection inspection = inspect_scene(scene, request);
-    if (inspection.setup.fallback) std::cerr << "fallback: " << *inspection.setup.fallback << "\n";
+    if (inspection.fallback()) std::cerr << "fallback: " << *inspection.fallback() << "\n";
     ViewOptions view_options;
     view_options.step = options.step;
     const RgbImage image = render_view(inspection, view, view_options, options.width, options.height);
     write_png(image, options.out);
-    std::cerr << "render: " << to_string(view) << " view of " << options.scene_file << " (" << inspection.method->name
-              << ", " << inspection.resolution << "² map, bias "
-              << (inspection.bias < 0.0 ? "slope-scaled" : std::to_string(inspection.bias)) << ") -> " << options.out << "\n";
+    std::cerr << "render: " << to_string(view) << " view of " << options.scene_file << " (" << inspection.name();
+    if (inspection.has_map())
+        std::cerr << ", " << inspection.resolution << "² map, bias "
+                  << (inspection.bias < 0.0 ? "slope-scaled" : std::to_string(inspection.bias));
+    std::cerr << ") -> " << options.out << "\n";
 }
 
 }  // namespace shadowlab

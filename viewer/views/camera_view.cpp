@@ -1,4 +1,7 @@
-// The Camera view: the scene as the camera sees it, shadowed by the method's own map on the GPU.
+// The Camera view: the scene as the camera sees it, shadowed on the GPU: by the method's own map
+// (ShadowMapPass), or for a geometric technique by its polygons in the stencil buffer
+// (StencilVolumePass): the shadow volume for `volumes`, and for `planar` the flattened casters
+// drawn onto their plane (Blinn's projection shadows, the stencil keeping overlaps from darkening twice).
 #include <vtkActor.h>
 #include <vtkLight.h>
 #include <vtkProperty.h>
@@ -6,6 +9,7 @@
 #include <vtkRenderer.h>
 
 #include "render/shadow_map_pass.hpp"
+#include "render/stencil_volume_pass.hpp"
 #include "views/view_parts.hpp"
 
 namespace shadowlab {
@@ -31,6 +35,26 @@ void add_scene_light(vtkRenderer* renderer, const Light& light) {
     renderer->AddLight(vtk);
 }
 
+void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options, vtkActor* casters) {
+    vtkNew<ShadowMapPass> pass;
+    pass->SetMap(in.map().world_to_uvz, in.map().z_bias_scale, in.resolution);
+    const Light& light = in.scene.light;
+    pass->SetBias(in.bias, light.is_directional() ? glm::dvec4(light.direction, 0.0) : glm::dvec4(light.position, 1.0),
+                  in.scene.camera.position);
+    pass->SetCasters({casters});
+    pass->SetShadePass(vtkNew<vtkRenderStepsPass>());
+    pass->SetOutput(options.lit_mask ? ShadowMapPass::Output::lit_mask : ShadowMapPass::Output::shaded);
+    renderer->SetPass(pass);
+}
+
+void install_stencil_pass(vtkRenderer* renderer, const TechniqueInspection& technique, const ViewOptions& options) {
+    vtkNew<StencilVolumePass> pass;
+    pass->SetPolygons(technique.stencil, technique.rule);
+    pass->SetScenePass(vtkNew<vtkRenderStepsPass>());
+    pass->SetOutput(options.lit_mask ? StencilVolumePass::Output::lit_mask : StencilVolumePass::Output::shaded);
+    renderer->SetPass(pass);
+}
+
 }  // namespace
 
 ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
@@ -40,25 +64,21 @@ ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const 
     for (size_t i = 0; i < in.casters.size(); ++i) not_casting[i] = !in.casters[i];
     auto casters = actor_for(triangles_polydata(in.triangles, in.casters, colours, glm::dmat4(1.0)), glm::dvec3(1.0));
     auto others = actor_for(triangles_polydata(in.triangles, not_casting, colours, glm::dmat4(1.0)), glm::dvec3(1.0));
+    // A lit mask from the stencil pass: the scene flat white, blackened where the stencil is set.
+    const bool flat = options.lit_mask && !in.has_map();
     for (vtkActor* actor : {casters.Get(), others.Get()}) {
-        actor->GetProperty()->SetAmbient(0.35);
-        actor->GetProperty()->SetDiffuse(0.75);
+        actor->GetProperty()->SetAmbient(flat ? 1.0 : 0.35);
+        actor->GetProperty()->SetDiffuse(flat ? 0.0 : 0.75);
         actor->GetProperty()->BackfaceCullingOff();
         renderer->AddActor(actor);
     }
     add_scene_light(renderer, in.scene.light);
     place_scene_camera(renderer, in.scene.camera);
     renderer->SetBackground(0.62, 0.74, 0.86);
-
-    vtkNew<ShadowMapPass> pass;
-    pass->SetMap(in.map().world_to_uvz, in.map().z_bias_scale, in.resolution);
-    const Light& light = in.scene.light;
-    pass->SetBias(in.bias, light.is_directional() ? glm::dvec4(light.direction, 0.0) : glm::dvec4(light.position, 1.0),
-                  in.scene.camera.position);
-    pass->SetCasters({casters.Get()});
-    pass->SetShadePass(vtkNew<vtkRenderStepsPass>());
-    pass->SetOutput(options.lit_mask ? ShadowMapPass::Output::lit_mask : ShadowMapPass::Output::shaded);
-    renderer->SetPass(pass);
+    if (in.has_map())
+        install_map_pass(renderer, in, options, casters);
+    else
+        install_stencil_pass(renderer, *in.technique, options);
     if (options.lit_mask) renderer->SetBackground(1.0, 0.0, 0.0);  // nothing visible: red, neither lit nor shadowed
     return {};
 }

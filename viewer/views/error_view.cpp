@@ -16,20 +16,6 @@
 namespace shadowlab {
 namespace {
 
-using Rgb = std::array<unsigned char, 3>;
-
-// An inferno-like ramp over t in [0, 1].
-Rgb heat(double t) {
-    static constexpr std::array<std::array<double, 3>, 5> stops{
-        {{0, 0, 4}, {87, 16, 110}, {188, 55, 84}, {249, 142, 9}, {252, 255, 164}}};
-    t = std::clamp(t, 0.0, 1.0) * (stops.size() - 1);
-    const size_t i = std::min(static_cast<size_t>(t), stops.size() - 2);
-    const double f = t - i;
-    Rgb out{};
-    for (int c = 0; c < 3; ++c) out[c] = static_cast<unsigned char>(stops[i][c] + f * (stops[i + 1][c] - stops[i][c]));
-    return out;
-}
-
 Rgb pixel_colour(const ShadowError& e, const ReferenceImage& ref, size_t i) {
     switch (e.verdicts[i]) {
         case PixelVerdict::false_shadow: return {255, 0, 255};
@@ -43,6 +29,11 @@ Rgb pixel_colour(const ShadowError& e, const ReferenceImage& ref, size_t i) {
 }  // namespace
 
 ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
+    if (!in.has_map()) {
+        renderer->SetBackground(0.12, 0.13, 0.16);
+        add_caption(renderer, in.title() + ": no map to measure (a geometric technique; `shadowlab measure` judges it)");
+        return {};
+    }
     const int width = options.width > 0 ? options.width : 640;
     const int height = options.height > 0 ? options.height : std::max(1, static_cast<int>(std::lround(width / in.scene.camera.aspect)));
     const ReferenceImage ref = exact_reference(in.scene, in.triangles, width, height);
@@ -58,7 +49,7 @@ ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const V
     std::snprintf(caption, sizeof caption,
                   "Error — %s %d²: %.3f%% misclassified (magenta false shadow %.3f%%, green false light %.3f%%); "
                   "m max %.2f, p95 %.2f (heat: m from 1/8 to 8)",
-                  in.method->name.c_str(), in.resolution, 100 * e.misclassified, 100 * e.false_shadow,
+                  in.name().c_str(), in.resolution, 100 * e.misclassified, 100 * e.false_shadow,
                   100 * e.false_light, e.m.max, e.m.p95);
     add_caption(renderer, caption);
     return {};

@@ -34,6 +34,10 @@ RgbImage depth_to_grey(const DepthMap& depth) {
 ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
     const int n = in.resolution;
     renderer->SetBackground(0.12, 0.13, 0.16);
+    if (!in.has_map()) {
+        add_caption(renderer, in.title() + ": no shadow map (a geometric technique; see the Stencil count view)");
+        return {};
+    }
     show_image(renderer, depth_to_grey(in.depth));
     // World -> image pixels: texel (x, y) is centred at pixel (x, y) of the image actor.
     glm::dmat4 to_pixels(1.0);
@@ -44,7 +48,7 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
     auto frustum = actor_for(geometry_polydata(in.inputs.frustum, to_pixels * in.map().world_to_uvz), glm::dvec3(1.0, 0.85, 0.1));
     frustum->GetProperty()->SetLineWidth(2.0f);
     renderer->AddActor(frustum);
-    add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.method->name + " (camera frustum in yellow)");
+    add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.name() + " (camera frustum in yellow)");
     return {};
 }
 

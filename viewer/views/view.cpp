@@ -29,12 +29,13 @@ struct ViewName {
     const char* title;
 };
 
-constexpr std::array<ViewName, 6> kViews{{{ViewKind::camera, "camera", "Camera"},
+constexpr std::array<ViewName, 7> kViews{{{ViewKind::camera, "camera", "Camera"},
                                           {ViewKind::world, "world", "World"},
                                           {ViewKind::light, "light", "Light space"},
                                           {ViewKind::ppls, "ppls", "PPLS"},
                                           {ViewKind::shadow_map, "shadowmap", "Shadow map"},
-                                          {ViewKind::error, "error", "Error"}}};
+                                          {ViewKind::error, "error", "Error"},
+                                          {ViewKind::stencil, "stencil", "Stencil count"}}};
 
 const ViewName& entry(ViewKind view) {
     for (const ViewName& v : kViews)
@@ -64,11 +65,12 @@ const std::vector<ViewKind>& all_views() {
 
 ViewReport build_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options) {
     if (!options.step.empty() && !in.trace.find(options.step))
-        throw std::invalid_argument("method " + in.method->name + " has no step '" + options.step + "'");
+        throw std::invalid_argument("method " + in.name() + " has no step '" + options.step + "'");
     switch (view) {
         case ViewKind::camera: return build_camera_view(renderer, in, options);
         case ViewKind::shadow_map: return build_shadow_map_view(renderer, in);
         case ViewKind::error: return build_error_view(renderer, in, options);
+        case ViewKind::stencil: return build_stencil_view(renderer, in);
         default: return build_space_view(renderer, in, view, options);
     }
 }
@@ -115,6 +117,17 @@ void show_image(vtkRenderer* renderer, const RgbImage& image) {
         window_aspect = static_cast<double>(size[0]) / size[1];
     camera->SetParallelScale(std::max(height / 2.0, width / (2.0 * window_aspect)));
     renderer->ResetCameraClippingRange();
+}
+
+Rgb heat(double t) {
+    static constexpr std::array<std::array<double, 3>, 5> stops{
+        {{0, 0, 4}, {87, 16, 110}, {188, 55, 84}, {249, 142, 9}, {252, 255, 164}}};
+    t = std::clamp(t, 0.0, 1.0) * (stops.size() - 1);
+    const size_t i = std::min(static_cast<size_t>(t), stops.size() - 2);
+    const double f = t - i;
+    Rgb out{};
+    for (int c = 0; c < 3; ++c) out[c] = static_cast<unsigned char>(stops[i][c] + f * (stops[i + 1][c] - stops[i][c]));
+    return out;
 }
 
 void add_caption(vtkRenderer* renderer, const std::string& text) {

@@ -11,7 +11,7 @@ class vtkRenderer;
 
 namespace shadowlab {
 
-enum class ViewKind { camera, world, light, ppls, shadow_map, error };
+enum class ViewKind { camera, world, light, ppls, shadow_map, error, stencil };
 
 const char* to_string(ViewKind view);                          // as on the command line: "shadowmap"
 const char* view_title(ViewKind view);                         // as in the window: "Shadow map"
@@ -30,7 +30,8 @@ struct ViewReport {
 };
 
 // Fills an empty renderer with the view and places its camera. The camera view installs a
-// ShadowMapPass on the renderer. Throws std::invalid_argument for a step id the trace lacks.
+// ShadowMapPass on the renderer (a StencilVolumePass for a geometric technique). Throws
+// std::invalid_argument for a step id the trace lacks.
 ViewReport build_view(vtkRenderer* renderer, const Inspection& inspection, ViewKind view, const ViewOptions& options);
 
 }  // namespace shadowlab

@@ -1,0 +1,222 @@
+#include "render/stencil_volume_pass.hpp"
+
+#include <vtkMatrix3x3.h>
+#include <vtkMatrix4x4.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLBufferObject.h>
+#include <vtkOpenGLCamera.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkOpenGLShaderCache.h>
+#include <vtkOpenGLState.h>
+#include <vtkOpenGLVertexArrayObject.h>
+#include <vtkRenderState.h>
+#include <vtkShaderProgram.h>
+#include <vtk_glew.h>
+
+namespace shadowlab {
+namespace {
+
+// The polygons as they are, w included: a vertex at infinity projects to its vanishing point.
+constexpr const char* kVertex = R"(//VTK::System::Dec
+in vec4 volumePosition;
+uniform mat4 worldToClip;
+void main() {
+  gl_Position = worldToClip * volumePosition;
+  gl_ClipDistance[0] = gl_Position.z + gl_Position.w;  // the near plane, which GL_DEPTH_CLAMP turns off
+}
+)";
+
+// The volume draws no colour; the darkening quad is blended as destination * alpha.
+constexpr const char* kFragment = R"(//VTK::System::Dec
+//VTK::Output::Dec
+uniform vec4 colour;
+void main() { gl_FragData[0] = colour; }
+)";
+
+// After the polygons' triangle corners: a full-viewport quad in clip space at depth 1, which with
+// GL_GREATER covers the pixels where the scene drew something, not the background.
+constexpr float kQuad[6][4] = {{-1, -1, 1, 1}, {1, -1, 1, 1}, {1, 1, 1, 1}, {-1, -1, 1, 1}, {1, 1, 1, 1}, {-1, 1, 1, 1}};
+
+constexpr float kShadedKeep = 0.45f;  // as ShadowMapPass dims its shadowed fragments
+
+// The stencil operations per rule (Everitt and Kilgard 2002, section 4: z-fail; Heidmann: z-pass).
+void set_stencil_ops(vtkOpenGLState* gl, StencilRule rule) {
+    switch (rule) {
+        case StencilRule::zfail:
+            gl->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+            gl->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+            break;
+        case StencilRule::zpass:
+            gl->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+            gl->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+            break;
+        case StencilRule::cover:
+            gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+            break;
+    }
+}
+
+// Does the bound draw framebuffer have stencil bits? VTK 9.1 allocates its render framebuffer's
+// depth texture with stencil bits when the window is stencil capable but attaches it as depth
+// only: attach that texture as the stencil buffer too. False when there are none.
+bool has_stencil_buffer() {
+    GLint type = GL_NONE, bits = 0, name = 0;
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_NONE) return true;
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_TEXTURE) return false;
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    if (bits <= 0) return false;
+    // Any texture target: the window's textures are multisampled when it is (the Qt widget's are).
+    glFramebufferTexture(GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, static_cast<GLuint>(name), 0);
+    if (glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) return true;
+    glFramebufferTexture(GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, 0, 0);  // as it was
+    return false;
+}
+
+}  // namespace
+
+vtkStandardNewMacro(StencilVolumePass);
+
+StencilVolumePass::StencilVolumePass() = default;
+
+StencilVolumePass::~StencilVolumePass() = default;
+
+void StencilVolumePass::SetPolygons(const std::vector<HomogeneousPolygon>& polygons, StencilRule rule) {
+    corners_.clear();
+    for (const HomogeneousPolygon& p : polygons)
+        for (size_t i = 1; i + 1 < p.size(); ++i)
+            for (const glm::dvec4& v : {p[0], p[i], p[i + 1]})
+                for (int c = 0; c < 4; ++c) corners_.push_back(static_cast<float>(v[c]));
+    polygon_corners_ = static_cast<int>(corners_.size() / 4);
+    for (const auto& corner : kQuad) corners_.insert(corners_.end(), corner, corner + 4);
+    rule_ = rule;
+    uploaded_ = false;
+    Modified();
+}
+
+void StencilVolumePass::SetScenePass(vtkRenderPass* scene) {
+    scene_ = scene;
+    Modified();
+}
+
+void StencilVolumePass::SetOutput(Output output) {
+    output_ = output;
+    Modified();
+}
+
+void StencilVolumePass::Render(const vtkRenderState* s) {
+    NumberOfRenderedProps = 0;
+    if (!scene_) return;
+    scene_->Render(s);  // 1: the scene, lit, writing depth
+    NumberOfRenderedProps = scene_->GetNumberOfRenderedProps();
+    auto* window = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+    if (polygon_corners_ == 0) return;
+    vtkShaderProgram* program = prepare(window);
+    if (!program) return;
+    if (!has_stencil_buffer()) {
+        vtkWarningMacro("the render window has no stencil buffer (SetStencilCapable(1) before its first render): no shadows");
+        return;
+    }
+    vtkOpenGLState* gl = window->GetState();
+    vtkOpenGLState::ScopedglEnableDisable stencil_test(gl, GL_STENCIL_TEST);
+    vtkOpenGLState::ScopedglEnableDisable depth_test(gl, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(gl, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable cull(gl, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglDepthMask depth_mask(gl);
+    vtkOpenGLState::ScopedglColorMask colour_mask(gl);
+    vtkOpenGLState::ScopedglDepthFunc depth_func(gl);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blend_func(gl);
+    vao_->Bind();
+    count(s, gl, program);
+    darken(gl, program);
+    vao_->Release();
+    gl->vtkglStencilFunc(GL_ALWAYS, 0, ~0u);
+    gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+}
+
+vtkShaderProgram* StencilVolumePass::prepare(vtkOpenGLRenderWindow* window) {
+    vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(kVertex, kFragment, "");
+    if (!program) return nullptr;
+    if (!vao_) {
+        vao_ = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+        buffer_ = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+        buffer_->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+        uploaded_ = false;
+    }
+    if (!uploaded_) {
+        vao_->Bind();
+        buffer_->Upload(corners_, vtkOpenGLBufferObject::ArrayBuffer);
+        vao_->AddAttributeArray(program, buffer_, "volumePosition", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
+        vao_->Release();
+        uploaded_ = true;
+    }
+    return program;
+}
+
+// 2: the polygons into the stencil buffer only.
+void StencilVolumePass::count(const vtkRenderState* s, vtkOpenGLState* gl, vtkShaderProgram* program) {
+    vtkMatrix4x4 *world_to_view, *view_to_clip, *world_to_clip;
+    vtkMatrix3x3* normals;
+    auto* camera = static_cast<vtkOpenGLCamera*>(s->GetRenderer()->GetActiveCamera());
+    camera->GetKeyMatrices(s->GetRenderer(), world_to_view, normals, view_to_clip, world_to_clip);
+    program->SetUniformMatrix("worldToClip", world_to_clip);
+    const float no_colour[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    program->SetUniform4f("colour", no_colour);
+
+    gl->vtkglStencilMask(~0u);
+    glClearStencil(0);
+    gl->vtkglClear(GL_STENCIL_BUFFER_BIT);
+    gl->vtkglEnable(GL_STENCIL_TEST);
+    gl->vtkglStencilFunc(GL_ALWAYS, 1, ~0u);
+    set_stencil_ops(gl, rule_);
+    gl->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl->vtkglDepthMask(GL_FALSE);
+    gl->vtkglEnable(GL_DEPTH_TEST);
+    gl->vtkglDepthFunc(rule_ == StencilRule::cover ? GL_LEQUAL : GL_LESS);
+    gl->vtkglDisable(GL_CULL_FACE);
+    gl->vtkglDisable(GL_BLEND);
+    // Volume faces a few depth units behind what they touch, so that a lit caster's own front cap
+    // counts as behind it (as the CPU count has a face within 1e-5 of the depth); no slope term,
+    // which would push the quads seen edge-on far behind the ground they cross. Planar shadows
+    // in front of their plane.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    if (rule_ == StencilRule::cover)
+        glPolygonOffset(-1.0f, -1.0f);
+    else
+        glPolygonOffset(0.0f, 8.0f);
+    glEnable(GL_DEPTH_CLAMP);
+    glEnable(GL_CLIP_DISTANCE0);
+    glDrawArrays(GL_TRIANGLES, 0, polygon_corners_);
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+// 3: dim the scene where the stencil is not 0.
+void StencilVolumePass::darken(vtkOpenGLState* gl, vtkShaderProgram* program) {
+    vtkNew<vtkMatrix4x4> identity;  // the quad is in clip space already
+    program->SetUniformMatrix("worldToClip", identity);
+    const float dim[4] = {0.0f, 0.0f, 0.0f, output_ == Output::lit_mask ? 0.0f : kShadedKeep};
+    program->SetUniform4f("colour", dim);
+    gl->vtkglStencilFunc(GL_NOTEQUAL, 0, ~0u);
+    gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    gl->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl->vtkglDepthFunc(GL_GREATER);  // the quad lies at depth 1: only where the scene drew
+    gl->vtkglEnable(GL_BLEND);
+    gl->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glDrawArrays(GL_TRIANGLES, polygon_corners_, 6);
+}
+
+void StencilVolumePass::ReleaseGraphicsResources(vtkWindow* w) {
+    if (scene_) scene_->ReleaseGraphicsResources(w);
+    if (vao_) vao_->ReleaseGraphicsResources();
+    if (buffer_) buffer_->ReleaseGraphicsResources();
+    vao_ = nullptr;
+    buffer_ = nullptr;
+    uploaded_ = false;
+}
+
+}  // namespace shadowlab
