@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -13,6 +14,11 @@
 
 namespace shadowlab {
 namespace {
+
+const std::vector<SettingSpec>& settings_of(const std::string& name) {
+    if (const Method* method = find_method(name)) return method->settings;
+    return find_technique(name)->settings;
+}
 
 QSlider* slider(int min, int max, QWidget* parent) {
     auto* s = new QSlider(Qt::Horizontal, parent);
@@ -47,12 +53,18 @@ ControlsPanel::ControlsPanel(QWidget* parent)
       bias_(new QDoubleSpinBox(this)),
       azimuth_(slider(0, 359, this)),
       elevation_(slider(1, 90, this)),
-      light_label_(new QLabel(this)) {
+      light_label_(new QLabel(this)),
+      camera_in_shadow_(new QCheckBox("Camera in shadow", this)) {
     method_->setObjectName("methodSelector");
-    for (const Method& m : all_methods()) {
-        method_->addItem(QString::fromStdString(m.name), QString::fromStdString(m.name));
-        method_->setItemData(method_->count() - 1, QString::fromStdString(m.title + ": " + m.description), Qt::ToolTipRole);
-    }
+    auto add_method = [this](const std::string& name, const std::string& tip) {
+        method_->addItem(QString::fromStdString(name), QString::fromStdString(name));
+        method_->setItemData(method_->count() - 1, QString::fromStdString(tip), Qt::ToolTipRole);
+    };
+    for (const Method& m : all_methods()) add_method(m.name, m.title + ": " + m.description);
+    method_->insertSeparator(method_->count());
+    for (const Technique& t : all_techniques()) add_method(t.name, t.title + ": " + t.description);
+    camera_in_shadow_->setObjectName("cameraInShadow");
+    camera_in_shadow_->setToolTip("move the camera into a caster's shadow volume: z-pass counts go wrong there, z-fail holds");
     method_->setCurrentText("focused");
     for (int r : {128, 256, 512, 1024, 2048, 4096}) resolution_->addItem(QString::number(r) + "²", r);
     resolution_->setCurrentIndex(3);
@@ -70,6 +82,7 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     general->addRow("Method", method_);
     general->addRow("Map", resolution_);
     general->addRow("Bias", bias_);
+    general->addRow(camera_in_shadow_);
     auto* light = new QGroupBox("Light direction", this);
     auto* light_form = new QFormLayout(light);
     light_form->addRow("Azimuth", azimuth_);
@@ -87,6 +100,7 @@ ControlsPanel::ControlsPanel(QWidget* parent)
         emit changed();
     });
     connect(resolution_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::changed);
+    connect(camera_in_shadow_, &QCheckBox::toggled, this, &ControlsPanel::cameraInShadowToggled);
     connect(bias_, &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
     for (QSlider* s : {azimuth_, elevation_}) connect(s, &QSlider::valueChanged, this, [this] {
         const glm::dvec3 d = light_direction();
@@ -97,8 +111,12 @@ ControlsPanel::ControlsPanel(QWidget* parent)
 
 void ControlsPanel::rebuild_settings() {
     while (settings_form_->rowCount() > 0) settings_form_->removeRow(0);
-    const Method* method = find_method(method_->currentData().toString().toStdString());
-    for (const SettingSpec& spec : method->settings) {
+    const std::string name = method_->currentData().toString().toStdString();
+    const std::vector<SettingSpec>& specs = settings_of(name);
+    const bool map = find_method(name) != nullptr;
+    resolution_->setEnabled(map);  // a geometric technique has no map
+    bias_->setEnabled(map);
+    for (const SettingSpec& spec : specs) {
         QWidget* editor = setting_editor(spec, settings_box_);
         editor->setObjectName(QString::fromStdString(spec.name));
         editor->setToolTip(QString::fromStdString(spec.description));
@@ -108,7 +126,7 @@ void ControlsPanel::rebuild_settings() {
             connect(static_cast<QDoubleSpinBox*>(editor), &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
         settings_form_->addRow(QString::fromStdString(spec.name), editor);
     }
-    settings_box_->setVisible(!method->settings.empty());
+    settings_box_->setVisible(!specs.empty());
 }
 
 InspectionRequest ControlsPanel::request() const {
@@ -140,6 +158,13 @@ void ControlsPanel::set_light_direction(const glm::dvec3& direction) {
     int az = static_cast<int>(std::lround(glm::degrees(std::atan2(to_light.z, to_light.x))));
     azimuth_->setValue((az + 360) % 360);
     light_label_->setText(QString("(%1, %2, %3)").arg(direction.x, 0, 'f', 3).arg(direction.y, 0, 'f', 3).arg(direction.z, 0, 'f', 3));
+}
+
+bool ControlsPanel::camera_in_shadow() const { return camera_in_shadow_->isChecked(); }
+
+void ControlsPanel::clear_camera_in_shadow() {
+    const QSignalBlocker block(camera_in_shadow_);
+    camera_in_shadow_->setChecked(false);
 }
 
 void ControlsPanel::set_method(const QString& name) {

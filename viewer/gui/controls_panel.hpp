@@ -1,11 +1,13 @@
 #pragma once
-// The controls: method, its settings (each within its declared range), map resolution, depth
-// bias, and the light's direction as azimuth and elevation.
+// The controls: method (the map methods, then the geometric techniques), its settings (each within
+// its declared range), map resolution, depth bias, the light's direction as azimuth and elevation,
+// and for shadow volumes a toggle that moves the camera into a shadow.
 #include <QWidget>
 #include <glm/glm.hpp>
 
 #include "model/inspection.hpp"
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
@@ -25,10 +27,13 @@ public:
     void set_method(const QString& name);
     void set_resolution(int resolution);
     QComboBox* method_selector() const { return method_; }
+    bool camera_in_shadow() const;
+    void clear_camera_in_shadow();  // without emitting cameraInShadowToggled()
 
 signals:
     void changed();       // any setting
     void lightChanged();  // the direction widget
+    void cameraInShadowToggled(bool inside);
 
 private:
     void rebuild_settings();
@@ -41,6 +46,7 @@ private:
     QSlider* azimuth_;
     QSlider* elevation_;
     QLabel* light_label_;
+    QCheckBox* camera_in_shadow_;
 };
 
 }  // namespace shadowlab

@@ -16,11 +16,13 @@
 #include <QStatusBar>
 #include <QTime>
 #include <fstream>
+#include <utility>
 
 #include "gui/controls_panel.hpp"
 #include "gui/plot_panel.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
+#include "model/camera_in_shadow.hpp"
 #include "render/rgb_image.hpp"
 #include "scene/mesh_scene.hpp"
 #include "scene/scene_loader.hpp"
@@ -96,6 +98,7 @@ MainWindow::MainWindow(QWidget* parent)
         scene_.light.direction = controls_->light_direction();
         recompute();
     });
+    connect(controls_, &ControlsPanel::cameraInShadowToggled, this, &MainWindow::put_camera_in_shadow);
     connect(steps_, &StepPlayer::stepChosen, this, [this] { redraw(); });
     connect(plot_dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) recompute();
@@ -128,10 +131,13 @@ bool MainWindow::open_file(const QString& path) {
         Scene loaded = load_any(path);
         std::swap(scene_, loaded);
         controls_->set_light_direction(scene_.light.direction);
+        const std::optional<Camera> outside = std::exchange(camera_outside_, std::nullopt);
+        controls_->clear_camera_in_shadow();
         inspection_.reset();
         recompute();
         if (!inspection_) {  // the new scene cannot be inspected: back to the old one
             std::swap(scene_, loaded);
+            if (outside) scene_.camera = *outside;
             recompute();
             return false;
         }
@@ -157,20 +163,38 @@ void MainWindow::recompute() {
         return;
     }
     steps_->set_trace(inspection_->trace);
-    const std::string fallback = inspection_->setup.fallback.value_or("none");
+    const std::string fallback = inspection_->fallback().value_or("none");
     const std::string bias = inspection_->bias < 0.0 ? "slope-scaled" : std::to_string(inspection_->bias);
-    statusBar()->showMessage(QString::fromStdString(inspection_->method->title + " — " +
-                                                    std::to_string(inspection_->resolution) + "² map, bias " + bias +
-                                                    " — fallback: " + fallback));
-    if (inspection_->setup.fallback) message(QString::fromStdString("fallback: " + fallback), false);
+    const std::string what = inspection_->has_map()
+                                 ? std::to_string(inspection_->resolution) + "² map, bias " + bias
+                                 : std::to_string(inspection_->technique->image.width) + "x" +
+                                       std::to_string(inspection_->technique->image.height) + " camera image judged";
+    statusBar()->showMessage(QString::fromStdString(inspection_->title() + " — " + what + " — fallback: " + fallback));
+    if (inspection_->fallback()) message(QString::fromStdString("fallback: " + fallback), false);
     redraw();
-    if (plot_->isVisible()) {
+    if (plot_->isVisible() && inspection_->has_map()) {
         try {
             plot_->update_plot(scene_, inspection_->method->name, controls_->request().settings);
         } catch (const std::exception& e) {
             message(QString("plot: ") + e.what(), true);
         }
     }
+}
+
+// Into a caster's shadow volume (z-pass fails there, z-fail holds), or back where the camera was.
+void MainWindow::put_camera_in_shadow(bool inside) {
+    if (inside && !camera_outside_) {
+        const std::optional<Camera> moved = camera_in_shadow(scene_);
+        if (!moved) {
+            controls_->clear_camera_in_shadow();
+            return message("camera in shadow: no caster's shadow has room for the camera above the ground", true);
+        }
+        camera_outside_ = scene_.camera;
+        scene_.camera = *moved;
+    } else if (!inside && camera_outside_) {
+        scene_.camera = *std::exchange(camera_outside_, std::nullopt);
+    }
+    recompute();
 }
 
 // A directional light now shines from `point` toward the scene's centre; others move there.
@@ -227,6 +251,7 @@ void MainWindow::export_view() {
 
 void MainWindow::export_matrices(MatrixFormat format, bool to_clipboard) {
     if (!inspection_) return;
+    if (!inspection_->has_map()) return message(QString::fromStdString(inspection_->name() + " has no shadow-map matrices"), true);
     const QString text = QString::fromStdString(shadowlab::export_matrices(inspection_->method->name, inspection_->setup, format));
     if (to_clipboard) {
         QApplication::clipboard()->setText(text);

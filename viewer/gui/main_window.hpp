@@ -44,6 +44,7 @@ private:
     void build_menus();
     void recompute();
     void move_light_to(const glm::dvec3& point);
+    void put_camera_in_shadow(bool inside);
     void redraw();
     void redraw(ViewPanel* panel);
     void message(const QString& text, bool error);
@@ -55,6 +56,7 @@ private:
     void restore_settings();
 
     Scene scene_;
+    std::optional<Camera> camera_outside_;  // the camera before "Camera in shadow" moved it
     std::optional<Inspection> inspection_;
     ControlsPanel* controls_;
     StepPlayer* steps_;

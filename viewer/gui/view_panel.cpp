@@ -27,6 +27,7 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     set_view(initial);
     vtkNew<vtkGenericOpenGLRenderWindow> window;
     window_ = window;
+    window_->SetStencilCapable(1);  // the stencil shadow pass (before the first render)
     widget_->setRenderWindow(window);
     widget_->setMinimumSize(200, 150);
     auto* layout = new QVBoxLayout(this);
@@ -55,7 +56,7 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
     sized.height = std::max(36, static_cast<int>(sized.width / inspection.scene.camera.aspect));
     const ViewReport report = build_view(renderer, inspection, view(), sized);
-    const bool image = view() == ViewKind::shadow_map || view() == ViewKind::error;
+    const bool image = view() == ViewKind::shadow_map || view() == ViewKind::error || view() == ViewKind::stencil;
     if (image)
         window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleImage>());
     else
