@@ -1,5 +1,6 @@
 // The window as a user drives it: switching the method changes what the views draw; a bad file
 // is reported by name and field while the previous scene stays; a mesh alone becomes a scene.
+#include <QCheckBox>
 #include <QComboBox>
 #include <QSettings>
 #include <QSurfaceFormat>
@@ -92,6 +93,36 @@ private slots:
         const glm::dvec3 d = window_->scene().light.direction;
         QVERIFY2(d.x < -0.9 && d.y < 0.0, qPrintable(QString("light direction %1 %2 %3").arg(d.x).arg(d.y).arg(d.z)));
         QVERIFY2(changed_share(before, camera->grab()) > 0.01, "the shadows did not move");
+    }
+
+    // Volumes draw real stencil shadows in the window's Camera view: with the camera moved into a
+    // shadow, z-pass and z-fail give clearly different pictures (z-pass inverts the shadows).
+    void volumesDrawStencilShadowsAndTheCameraInShadowBreaksZPass() {
+        QVERIFY(window_->open_file(source("data/scenes/volumes.json")));
+        QApplication::processEvents();
+        ViewPanel* camera = panel_showing(ViewKind::camera);
+        const RgbImage map_image = camera->grab();
+        const glm::dvec3 outside = window_->scene().camera.position;
+        QComboBox* selector = window_->controls()->method_selector();
+        selector->setCurrentIndex(selector->findData("volumes"));
+        QApplication::processEvents();
+        QVERIFY(window_->inspection()->technique.has_value());
+        QVERIFY2(changed_share(map_image, camera->grab()) > 0.0005, "the Camera view did not change for volumes");
+        auto* inside = window_->controls()->findChild<QCheckBox*>("cameraInShadow");
+        QVERIFY(inside);
+        inside->setChecked(true);
+        QApplication::processEvents();
+        QVERIFY(window_->scene().camera.position != outside);
+        const RgbImage zfail = camera->grab();
+        auto* count = window_->controls()->findChild<QComboBox*>("count");
+        QVERIFY(count);
+        count->setCurrentText("zpass");
+        QApplication::processEvents();
+        const double differ = changed_share(zfail, camera->grab());
+        QVERIFY2(differ > 0.2, qPrintable(QString("z-pass and z-fail differ at only %1 of the pixels").arg(differ)));
+        inside->setChecked(false);
+        QApplication::processEvents();
+        QVERIFY(window_->scene().camera.position == outside);
     }
 
     void choosingAStepHighlightsItsGeometry() {
