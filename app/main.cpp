@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     CLI::App* render_cmd = app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
     render_cmd->add_option("scene", render.scene_file, "scene file (JSON)")->required();
     render_cmd->add_option("--method,-m", render.method, kMethodNames)->capture_default_str();
-    render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | error")->capture_default_str();
+    render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | error | stencil")->capture_default_str();
     render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
     render_cmd->add_option("--size", render_size, "image size WxH")->capture_default_str();
     render_cmd->add_option("--resolution,-r", render.resolution, "shadow map resolution")->capture_default_str();
