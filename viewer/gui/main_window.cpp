@@ -80,7 +80,6 @@ MainWindow::MainWindow(QWidget* parent)
     }
     splitters_.push_back(rows);
     setCentralWidget(rows);
-    active_panel_ = panels_.front();
 
     addDockWidget(Qt::LeftDockWidgetArea, dock("Controls", "controlsDock", controls_, this));
     addDockWidget(Qt::RightDockWidgetArea, dock("Steps", "stepsDock", steps_, this));
@@ -112,7 +111,16 @@ void MainWindow::build_menus() {
     recent_menu_ = file->addMenu("Open &recent");
     rebuild_recent_menu();
     file->addSeparator();
-    file->addAction("Export view as &PNG…", this, &MainWindow::export_view);
+    // One entry per panel, named by the view it shows when the menu opens.
+    QMenu* export_menu = file->addMenu("Export view as &PNG");
+    connect(export_menu, &QMenu::aboutToShow, this, [this, export_menu] {
+        export_menu->clear();
+        for (size_t i = 0; i < panels_.size(); ++i) {
+            ViewPanel* panel = panels_[i];
+            export_menu->addAction(QString("Panel %1: %2…").arg(i + 1).arg(view_title(panel->view())), this,
+                                   [this, panel] { export_view(panel); });
+        }
+    });
     QMenu* matrices = file->addMenu("Export &matrices");
     for (const auto& [name, format] : {std::pair{"GLSL", MatrixFormat::glsl}, std::pair{"HLSL", MatrixFormat::hlsl},
                                        std::pair{"JSON", MatrixFormat::json}}) {
@@ -215,7 +223,6 @@ void MainWindow::redraw() {
 
 void MainWindow::redraw(ViewPanel* panel) {
     if (!inspection_) return;
-    active_panel_ = panel;
     ViewOptions options;
     options.step = steps_->chosen().toStdString();
     try {
@@ -238,11 +245,12 @@ void MainWindow::open_dialog() {
     if (!path.isEmpty()) open_file(path);
 }
 
-void MainWindow::export_view() {
-    const QString path = QFileDialog::getSaveFileName(this, "Export view", "view.png", "PNG images (*.png)");
-    if (path.isEmpty() || !active_panel_) return;
+void MainWindow::export_view(ViewPanel* panel) {
+    const QString name = QString(to_string(panel->view())) + ".png";
+    const QString path = QFileDialog::getSaveFileName(this, "Export view", name, "PNG images (*.png)");
+    if (path.isEmpty()) return;
     try {
-        write_png(active_panel_->grab(), path.toStdString());
+        write_png(panel->grab(), path.toStdString());
         message("wrote " + path, false);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);

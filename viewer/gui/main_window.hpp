@@ -49,7 +49,7 @@ private:
     void redraw(ViewPanel* panel);
     void message(const QString& text, bool error);
     void open_dialog();
-    void export_view();
+    void export_view(ViewPanel* panel);
     void export_matrices(MatrixFormat format, bool to_clipboard);
     void remember_recent(const QString& path);
     void rebuild_recent_menu();
@@ -65,7 +65,6 @@ private:
     std::vector<ViewPanel*> panels_;
     std::vector<QSplitter*> splitters_;
     QMenu* recent_menu_ = nullptr;
-    ViewPanel* active_panel_ = nullptr;
     QString last_message_;
 };
 
