@@ -115,8 +115,9 @@ void add_series(vtkChartXY& chart, const ChartSpec& spec, size_t index, Bounds& 
 
     const Rgb rgb = series_color(spec, index);
     vtkSmartPointer<vtkTable> table = make_table(kept);
-    vtkPlotPoints* plot = add_plot(chart, s.line ? vtkChart::LINE : vtkChart::POINTS, table, rgb,
-                                   vtkPlotPoints::CIRCLE, s.line ? 6.0f : 8.0f);
+    const bool line = s.line && kept.size() >= 2;  // a line needs two points; one is drawn as a point
+    vtkPlotPoints* plot = add_plot(chart, line ? vtkChart::LINE : vtkChart::POINTS, table, rgb,
+                                   vtkPlotPoints::CIRCLE, line ? 6.0f : 8.0f);
     plot->SetLabel(dropped == 0 ? s.name
                                 : s.name + " (" + std::to_string(dropped) + " non-positive dropped)");
     if (!marked.empty())
