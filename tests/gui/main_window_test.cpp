@@ -78,6 +78,16 @@ private slots:
         QVERIFY2(changed_share(before, camera->grab()) < 0.001, "the Camera view changed after a failed open");
     }
 
+    void methodAndViewsAreRememberedBetweenRuns() {
+        QComboBox* selector = window_->controls()->method_selector();
+        selector->setCurrentIndex(selector->findData("lispsm"));
+        window_->panels()[0]->set_view(ViewKind::ppls);
+        window_->close();  // saves the settings
+        MainWindow next;
+        QCOMPARE(QString::fromStdString(next.controls()->request().method), QString("lispsm"));
+        QCOMPARE(static_cast<int>(next.panels()[0]->view()), static_cast<int>(ViewKind::ppls));
+    }
+
     void aMeshAloneGetsAGroundACameraAndASun() {
         QVERIFY(window_->open_file(source("data/meshes/tetrahedron.obj")));
         QCOMPARE(window_->scene().objects.size(), size_t(2));

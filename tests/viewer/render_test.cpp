@@ -73,6 +73,21 @@ TEST(ShadowMapView, ShowsTheCasterWhereWorldToUvzPutsIt) {
         << "the box top is nearer the light than the ground: darker";
 }
 
+// The texel grid appears once a texel spans 8 screen pixels, and not before.
+TEST(ShadowMapView, TexelGridShowsOnlyWhenTexelsAreLarge) {
+    const Scene scene = floating_box(kWidth, kHeight);
+    auto bluish_pixels = [&](int resolution) {
+        const RgbImage image = render_view(inspect(scene, "focused", resolution), ViewKind::shadow_map, {}, 512, 512);
+        size_t count = 0;
+        for (int y = 0; y < image.height - 40; ++y)  // above the caption
+            for (int x = 0; x < image.width; ++x)
+                count += image.at(x, y)[2] > image.at(x, y)[0] + 60;
+        return count;
+    };
+    EXPECT_GT(bluish_pixels(32), 512u * 20);  // 33 lines each way, 16 pixels apart
+    EXPECT_EQ(bluish_pixels(1024), 0u);       // half a pixel per texel: no grid
+}
+
 // Issue 5: the GPU pass and the CPU lookup agree on the visible pixels away from shadow edges.
 class GpuAgreesWithCpu : public ::testing::TestWithParam<std::string> {};
 

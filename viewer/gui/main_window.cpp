@@ -161,9 +161,8 @@ bool MainWindow::open_file(const QString& path) {
 
 void MainWindow::recompute() {
     if (scene_.objects.empty()) return;
-    for (ViewPanel* panel : panels_)  // the camera's image is the Camera view's panel
-        if (panel->view() == ViewKind::camera && panel->width() > 0 && panel->height() > 40)
-            scene_.camera.aspect = static_cast<double>(panel->width()) / (panel->height() - 30);
+    for (ViewPanel* panel : panels_)  // the camera's image is the Camera view's picture
+        if (panel->view() == ViewKind::camera && panel->picture_aspect()) scene_.camera.aspect = *panel->picture_aspect();
     try {
         inspection_ = inspect_scene(scene_, controls_->request());
     } catch (const std::exception& e) {

@@ -111,6 +111,11 @@ void ViewPanel::report_camera() {
     emit cameraMoved({p[0], p[1], p[2]}, {f[0], f[1], f[2]}, {u[0], u[1], u[2]});
 }
 
+std::optional<double> ViewPanel::picture_aspect() const {
+    if (widget_->width() < 16 || widget_->height() < 16) return std::nullopt;
+    return static_cast<double>(widget_->width()) / widget_->height();
+}
+
 RgbImage ViewPanel::grab() {
     const QImage frame = widget_->grabFramebuffer().convertToFormat(QImage::Format_RGB888);
     RgbImage image(frame.width(), frame.height());

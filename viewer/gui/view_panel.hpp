@@ -1,5 +1,6 @@
 #pragma once
 // One view of the window: a chooser for which view it shows, over a VTK widget drawing it.
+#include <optional>
 #include <vector>
 #include <QWidget>
 #include <vtkSmartPointer.h>
@@ -24,6 +25,7 @@ public:
     // Redraws from the inspection; returns what the view could not draw.
     ViewReport show(const Inspection& inspection, const ViewOptions& options);
     RgbImage grab();  // what the panel shows now
+    std::optional<double> picture_aspect() const;  // width / height of the drawing, once laid out
 
 signals:
     void viewChosen();

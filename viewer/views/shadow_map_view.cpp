@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 
@@ -29,6 +31,28 @@ RgbImage depth_to_grey(const DepthMap& depth) {
     return image;
 }
 
+// Texel edges as lines: x = k - 1/2 and y = k - 1/2 in image pixels, just above the image.
+Placed texel_grid(int n) {
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> lines;
+    for (int k = 0; k <= n; ++k) {
+        lines.push_back({{k - 0.5, -0.5, 0.5}, {k - 0.5, n - 0.5, 0.5}});
+        lines.push_back({{-0.5, k - 0.5, 0.5}, {n - 0.5, k - 0.5, 0.5}});
+    }
+    return segments_polydata(lines, glm::dmat4(1.0));
+}
+
+// Before each render: the grid shows once a texel spans at least 8 screen pixels (zoomed in).
+class TexelGridToggle : public vtkCommand {
+public:
+    static TexelGridToggle* New() { return new TexelGridToggle; }
+    vtkSmartPointer<vtkActor> grid;
+    void Execute(vtkObject* caller, unsigned long, void*) override {
+        auto* renderer = static_cast<vtkRenderer*>(caller);
+        const double pixels_per_texel = renderer->GetSize()[1] / (2.0 * renderer->GetActiveCamera()->GetParallelScale());
+        grid->SetVisibility(pixels_per_texel >= 8.0);
+    }
+};
+
 }  // namespace
 
 ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
@@ -48,7 +72,12 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
     auto frustum = actor_for(geometry_polydata(in.inputs.frustum, to_pixels * in.map().world_to_uvz), glm::dvec3(1.0, 0.85, 0.1));
     frustum->GetProperty()->SetLineWidth(2.0f);
     renderer->AddActor(frustum);
-    add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.name() + " (camera frustum in yellow)");
+    vtkNew<TexelGridToggle> toggle;
+    toggle->grid = actor_for(texel_grid(n), glm::dvec3(0.35, 0.55, 0.85));
+    renderer->AddActor(toggle->grid);
+    renderer->AddObserver(vtkCommand::StartEvent, toggle);
+    add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.name() +
+                              " (camera frustum in yellow; texel grid when zoomed in)");
     return {};
 }
 
