@@ -1,5 +1,6 @@
 // What the views draw, checked on their pixels (under Xvfb): shadows where the map puts them, the
 // map's depth image where world_to_uvz puts the caster, and the GPU pass against the CPU lookup.
+#include <array>
 #include <iostream>
 #include <gtest/gtest.h>
 
@@ -87,6 +88,30 @@ TEST(ShadowMapView, TexelGridShowsOnlyWhenTexelsAreLarge) {
     };
     EXPECT_GT(bluish_pixels(32), 512u * 20);  // 33 lines each way, 16 pixels apart
     EXPECT_EQ(bluish_pixels(1024), 0u);       // half a pixel per texel: no grid
+}
+
+// The Error view paints false light green and false shadow magenta: planar shadows miss every
+// shadow on a building of the default scene; z-fail volumes miss next to nothing on closed meshes.
+TEST(ErrorView, PaintsMisclassifiedPixelsByKind) {
+    auto painted = [&](const std::string& scene_name, const std::string& method) {
+        Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/" + scene_name + ".json");
+        scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
+        InspectionRequest request;
+        request.method = method;
+        request.image_width = kWidth;
+        const RgbImage image = render_view(inspect_scene(scene, request), ViewKind::error, {}, kWidth, kHeight);
+        std::array<size_t, 2> counts{};  // false light, false shadow
+        for (int y = 0; y < image.height - 30; ++y)  // above the caption
+            for (int x = 0; x < image.width; ++x) {
+                const unsigned char* c = image.at(x, y);
+                counts[0] += c[0] == 0 && c[1] == 255 && c[2] == 0;
+                counts[1] += c[0] == 255 && c[1] == 0 && c[2] == 255;
+            }
+        return counts;
+    };
+    EXPECT_GT(painted("default", "planar")[0], 100u);
+    const auto volumes = painted("volumes", "volumes");
+    EXPECT_LT(volumes[0] + volumes[1], kWidth * kHeight / 1000u);
 }
 
 // Issue 5: the GPU pass and the CPU lookup agree on the visible pixels away from shadow edges.
