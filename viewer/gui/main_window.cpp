@@ -37,6 +37,20 @@ Scene load_any(const QString& path) {
     return QFileInfo(path).suffix().compare("json", Qt::CaseInsensitive) == 0 ? load_scene(file) : scene_around_mesh(file);
 }
 
+// Long work in the window: a wait cursor and a status line, painted before the work starts, both
+// gone when it ends.
+class BusyNotice {
+public:
+    BusyNotice(QStatusBar* bar, const QString& what) {
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+        bar->showMessage(what + "…");
+        QApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+    }
+    ~BusyNotice() { QApplication::restoreOverrideCursor(); }
+    BusyNotice(const BusyNotice&) = delete;
+    BusyNotice& operator=(const BusyNotice&) = delete;
+};
+
 QDockWidget* dock(const QString& title, const QString& name, QWidget* content, QMainWindow* window) {
     auto* d = new QDockWidget(title, window);
     d->setObjectName(name);
@@ -163,8 +177,10 @@ void MainWindow::recompute() {
     if (scene_.objects.empty()) return;
     for (ViewPanel* panel : panels_)  // the camera's image is the Camera view's picture
         if (panel->view() == ViewKind::camera && panel->picture_aspect()) scene_.camera.aspect = *panel->picture_aspect();
+    const InspectionRequest request = controls_->request();
     try {
-        inspection_ = inspect_scene(scene_, controls_->request());
+        const BusyNotice busy(statusBar(), QString::fromStdString("computing " + request.method));
+        inspection_ = inspect_scene(scene_, request);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);
         return;
@@ -181,7 +197,9 @@ void MainWindow::recompute() {
     redraw();
     if (plot_->isVisible() && inspection_->has_map()) {
         try {
-            plot_->update_plot(scene_, inspection_->method->name, controls_->request().settings);
+            const BusyNotice busy(statusBar(), "plot: measuring " + QString::fromStdString(request.method) +
+                                                   " at 256² to 2048² against the exact reference");
+            plot_->update_plot(scene_, inspection_->method->name, request.settings);
         } catch (const std::exception& e) {
             message(QString("plot: ") + e.what(), true);
         }
