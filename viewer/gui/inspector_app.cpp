@@ -11,7 +11,7 @@
 namespace shadowlab {
 
 int run_inspector(int argc, char** argv, const InspectorOptions& options) {
-    { const XDisplay probe("the window"); }  // a clear message instead of Qt's abort
+    { const XDisplay probe("windows"); }  // a clear message instead of Qt's abort
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication::setOrganizationName("ShadowLab");
     QApplication::setApplicationName("shadowlab");
