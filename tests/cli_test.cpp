@@ -12,35 +12,15 @@
 #include <nlohmann/json.hpp>
 
 #include "methods/fallbacks.hpp"
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
+using shadowlab::testing::CliResult;
+using shadowlab::testing::run_cli;
+using shadowlab::testing::slurp;
 using shadowlab::testing::source_path;
 
 namespace {
-
-struct CliResult {
-    int exit_code;
-    std::string out, err;
-};
-
-std::string slurp(const std::string& file) {
-    std::ifstream in(file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-CliResult run_cli(const std::string& args) {
-    // One file per process: ctest runs the CLI tests in parallel.
-    const std::string err_file = ::testing::TempDir() + "shadowlab_cli_stderr_" + std::to_string(getpid()) + ".txt";
-    const std::string command = std::string(SHADOWLAB_CLI) + " " + args + " 2>" + err_file;
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buffer;
-    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return {WEXITSTATUS(status), out, slurp(err_file)};
-}
 
 std::map<std::string, std::string> expected_bad_scenes() {
     std::map<std::string, std::string> expected;
