@@ -28,6 +28,13 @@ double changed_share(const RgbImage& a, const RgbImage& b) {
     return static_cast<double>(changed) / (a.rgb.size() / 3);
 }
 
+// An image of the same size filled with its top-left pixel's colour (the background).
+RgbImage flat_like(const RgbImage& image) {
+    RgbImage flat(image.width, image.height);
+    for (size_t i = 0; i < flat.rgb.size(); i += 3) std::copy_n(image.rgb.begin(), 3, flat.rgb.begin() + i);
+    return flat;
+}
+
 }  // namespace
 
 class MainWindowTest : public QObject {
@@ -133,6 +140,27 @@ private slots:
         inside->setChecked(false);
         QApplication::processEvents();
         QVERIFY(window_->scene().camera.position == outside);
+    }
+
+    // Every method and technique in every view of one panel: something is drawn (not one flat
+    // colour), and nothing throws or crashes.
+    void everyMethodDrawsEveryView() {
+        ViewPanel* panel = window_->panels()[0];
+        QComboBox* selector = window_->controls()->method_selector();
+        for (int m = 0; m < selector->count(); ++m) {
+            if (selector->itemData(m).toString().isEmpty()) continue;  // the separator
+            selector->setCurrentIndex(m);
+            QApplication::processEvents();
+            for (ViewKind view : all_views()) {
+                panel->set_view(view);
+                emit panel->viewChosen();
+                QApplication::processEvents();
+                const RgbImage image = panel->grab();
+                const double drawn = changed_share(image, flat_like(image));
+                QVERIFY2(drawn > 0.01, qPrintable(selector->itemData(m).toString() + " in " + view_title(view) +
+                                                  ": the panel is one flat colour"));
+            }
+        }
     }
 
     void choosingAStepHighlightsItsGeometry() {
