@@ -57,10 +57,10 @@ void set_stencil_ops(vtkOpenGLState* gl, StencilRule rule) {
     }
 }
 
-// Does the bound draw framebuffer have stencil bits? VTK 9.1 allocates its render framebuffer's
+// Makes sure the bound draw framebuffer has a stencil attachment; false when it cannot. VTK 9.1 allocates its render framebuffer's
 // depth texture with stencil bits when the window is stencil capable but attaches it as depth
 // only: attach that texture as the stencil buffer too. False when there are none.
-bool has_stencil_buffer() {
+bool attach_stencil_buffer() {
     GLint type = GL_NONE, bits = 0, name = 0;
     glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
     if (type != GL_NONE) return true;
@@ -116,7 +116,7 @@ void StencilVolumePass::Render(const vtkRenderState* s) {
     if (polygon_corners_ == 0) return;
     vtkShaderProgram* program = prepare(window);
     if (!program) return;
-    if (!has_stencil_buffer()) {
+    if (!attach_stencil_buffer()) {
         vtkWarningMacro("the render window has no stencil buffer (SetStencilCapable(1) before its first render): no shadows");
         return;
     }
