@@ -57,9 +57,9 @@ void set_stencil_ops(vtkOpenGLState* gl, StencilRule rule) {
     }
 }
 
-// Makes sure the bound draw framebuffer has a stencil attachment; false when it cannot. VTK 9.1 allocates its render framebuffer's
-// depth texture with stencil bits when the window is stencil capable but attaches it as depth
-// only: attach that texture as the stencil buffer too. False when there are none.
+// Makes sure the bound draw framebuffer has a stencil attachment; false when it cannot. VTK 9.1
+// allocates its render framebuffer's depth texture with stencil bits when the window is stencil
+// capable but attaches it as depth only: that texture is attached as the stencil buffer too.
 bool attach_stencil_buffer() {
     GLint type = GL_NONE, bits = 0, name = 0;
     glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
