@@ -112,7 +112,10 @@ MainWindow::MainWindow(QWidget* parent)
         recompute();
     });
     connect(controls_, &ControlsPanel::cameraInShadowToggled, this, &MainWindow::put_camera_in_shadow);
-    connect(steps_, &StepPlayer::stepChosen, this, [this] { redraw(); });
+    connect(steps_, &StepPlayer::stepChosen, this, [this] {  // only the views that draw steps: the
+        for (ViewPanel* panel : panels_)                     // Error view would trace its reference again
+            if (shows_steps(panel->view())) redraw(panel);
+    });
     connect(plot_dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) recompute();
     });

@@ -63,6 +63,8 @@ const std::vector<ViewKind>& all_views() {
     return views;
 }
 
+bool shows_steps(ViewKind view) { return view == ViewKind::world || view == ViewKind::light || view == ViewKind::ppls; }
+
 ViewReport build_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options) {
     if (!options.step.empty() && !in.trace.find(options.step))
         throw std::invalid_argument("method " + in.name() + " has no step '" + options.step + "'");

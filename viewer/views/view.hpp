@@ -17,6 +17,8 @@ const char* to_string(ViewKind view);                          // as on the comm
 const char* view_title(ViewKind view);                         // as in the window: "Shadow map"
 std::optional<ViewKind> view_named(const std::string& name);  // nullopt for an unknown name
 const std::vector<ViewKind>& all_views();
+// Does the view draw the chosen trace step (World, Light space, PPLS)? The others do not change with it.
+bool shows_steps(ViewKind view);
 
 struct ViewOptions {
     std::string step;       // the trace step to highlight; empty: the method's last step
