@@ -5,6 +5,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "limits.hpp"
 #include "measure_command.hpp"
 
 namespace shadowlab {
@@ -21,7 +22,7 @@ void write_csv_row(std::ofstream& csv, const std::string& scene, const Measureme
     csv << csv_field(scene) << ',' << m.method << ',' << m.resolution << ',' << e.misclassified << ','
         << e.false_shadow << ',' << e.false_light << ',' << e.m.max << ',' << e.m.mean << ',' << e.m.p95 << ','
         << m.setup_ms << ',' << m.raster_ms << ',' << m.setup_ms + m.raster_ms << ','
-        << csv_field(m.fallback.value_or("")) << ',';
+        << csv_field(describe(m.notes())) << ',';
     if (m.geometry) csv << m.geometry->polygons << ',' << m.geometry->fill_mean << ',' << m.geometry->fill_max;
     else csv << ",,";
     csv << '\n';
@@ -47,8 +48,8 @@ ChartSpec error_against_cost(const std::vector<std::pair<std::string, std::vecto
 
 void run_bench(const BenchOptions& o) {
     if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
-    const std::vector<NamedMethod> methods = methods_named(o.methods);
-    for (int r : o.resolutions) check_resolution(r);
+    const std::vector<const Method*> methods = methods_named(o.methods);
+    for (int r : o.resolutions) limits::check(limits::map_resolution, "--resolutions", r);
     std::filesystem::create_directories(o.out_dir);
     const std::string csv_path = (std::filesystem::path(o.out_dir) / "bench.csv").string();
     std::ofstream csv(csv_path);
@@ -58,22 +59,22 @@ void run_bench(const BenchOptions& o) {
 
     std::vector<std::pair<std::string, std::vector<Measurement>>> runs;
     // A technique has no map: it is measured once per scene, whatever the resolutions.
-    auto resolutions_of = [&](const NamedMethod& m) { return m.map ? o.resolutions : std::vector<int>{0}; };
+    auto resolutions_of = [&](const Method* m) { return m->makes_maps() ? o.resolutions : std::vector<int>{0}; };
     size_t total = 0, done = 0;
-    for (const NamedMethod& m : methods) total += o.scene_files.size() * resolutions_of(m).size();
+    for (const Method* m : methods) total += o.scene_files.size() * resolutions_of(m).size();
     for (const std::string& scene_file : o.scene_files) {
         const MeasureContext context = prepare_with_progress(scene_file, o.width, o.height);
         const std::string scene_name = std::filesystem::path(scene_file).stem().string();
-        for (const NamedMethod& method : methods) {
-            const Settings settings = resolve_settings(method.name(), method.settings(), {});
-            auto& series = runs.emplace_back(o.scene_files.size() > 1 ? method.name() + " (" + scene_name + ")"
-                                                                      : method.name(),
+        for (const Method* method : methods) {
+            const Settings settings = resolve_settings(method->name, method->settings, {});
+            auto& series = runs.emplace_back(o.scene_files.size() > 1 ? method->name + " (" + scene_name + ")"
+                                                                      : method->name,
                                              std::vector<Measurement>{});
             for (int resolution : resolutions_of(method)) {
-                std::cerr << "bench: [" << ++done << "/" << total << "] " << scene_name << " " << method.name();
-                if (method.map) std::cerr << " " << resolution << "^2";
+                std::cerr << "bench: [" << ++done << "/" << total << "] " << scene_name << " " << method->name;
+                if (method->makes_maps()) std::cerr << " " << resolution << "^2";
                 std::cerr << "\n";
-                series.second.push_back(measure_named(context, method, settings, resolution, -1.0));
+                series.second.push_back(measure(context, *method, settings, resolution, -1.0));
                 write_csv_row(csv, scene_name, series.second.back());
             }
         }

@@ -9,7 +9,7 @@
 #include "io/inspection_json.hpp"
 #include "math/matrix.hpp"
 #include "measure_command.hpp"
-#include "methods/method.hpp"
+#include "registry/method.hpp"
 #include "reference/exact_shadows.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/tessellation.hpp"
@@ -80,10 +80,23 @@ void print_steps(const Trace& trace) {
     }
 }
 
+void print_map(size_t i, const ShadowMap& map) {
+    const std::string name = "\nmap " + std::to_string(i);
+    if (map.projection == Projection::paraboloid)
+        std::cout << name << " paraboloid: centre" << format_value(map.paraboloid.centre, "") << ", near "
+                  << map.paraboloid.near << ", far " << map.paraboloid.far << "; frame_from_world (rows):"
+                  << format_value(glm::dmat4(map.paraboloid.frame_from_world), "");
+    else
+        std::cout << name << (map.projection == Projection::cube_face ? " (cube face " + std::to_string(map.cube_face) + ")" : "")
+                  << " world_to_uvz (rows):" << format_value(map.world_to_uvz, "");
+    if (map.viewport != glm::dvec4(0.0, 0.0, 1.0, 1.0)) std::cout << name << " tile (u0, v0, u1, v1):" << format_value(map.viewport, "");
+    std::cout << name << " z_bias_scale: " << map.z_bias_scale << "\n";
+}
+
 void inspect_map(const InspectOptions& options, const Method& method, const Settings& settings, const Scene& scene) {
     const ShadowInputs inputs = gather_inputs(scene);
     Trace trace;
-    const ShadowSetup setup = method.compute(inputs, settings, &trace);
+    const ShadowSetup setup = method.compute_maps(inputs, settings, &trace);
     if (options.json) {
         std::cout << inspection_json(method.name, settings, inputs, setup, trace).dump(1) << "\n";
         return;
@@ -91,23 +104,22 @@ void inspect_map(const InspectOptions& options, const Method& method, const Sett
     print_header(options.scene_file, method.name, method.title, settings);
     std::cout << "inputs:   " << inputs.receivers.size() << " receiver boxes, " << inputs.casters.size()
               << " caster boxes\n"
-              << "fallback: " << setup.fallback.value_or("none") << "\n\nsteps:\n";
+              << "fallback: " << (setup.fallbacks.empty() ? "none" : describe(setup.fallbacks)) << "\n\nsteps:\n";
     print_steps(trace);
-    for (size_t i = 0; i < setup.maps.size(); ++i)
-        std::cout << "\nmap " << i << " world_to_uvz (rows):" << format_value(setup.maps[i].world_to_uvz, "")
-                  << "\nmap " << i << " z_bias_scale: " << setup.maps[i].z_bias_scale << "\n";
+    if (setup.maps.size() > 1) std::cout << "\nmaps: " << setup.maps.size() << ", chosen " << to_string(setup.selection.rule) << "\n";
+    for (size_t i = 0; i < setup.maps.size(); ++i) print_map(i, setup.maps[i]);
 }
 
 // A technique judges camera pixels: inspect looks through a small image of the camera's aspect.
 constexpr int kInspectImageWidth = 320;
 
-void inspect_technique(const InspectOptions& options, const Technique& technique, const Settings& settings,
+void inspect_technique(const InspectOptions& options, const Method& technique, const Settings& settings,
                        const Scene& scene) {
     const WorldTriangles triangles = tessellate(scene);
     const int height = std::max(1, int(std::lround(kInspectImageWidth / scene.camera.aspect)));
     const ReferenceImage image = exact_reference(scene, triangles, kInspectImageWidth, height);
     Trace trace;
-    const TechniqueResult result = technique.compute(scene, triangles, image, settings, &trace);
+    const GeometryResult result = technique.compute_geometry(scene, triangles, image, settings, &trace);
     if (options.json) {
         std::cout << technique_inspection_json(technique.name, settings, result, trace).dump(1) << "\n";
         return;
@@ -116,20 +128,20 @@ void inspect_technique(const InspectOptions& options, const Technique& technique
     std::cout << "image:    " << image.width << "x" << image.height << " (the per-pixel steps)\n"
               << "cost:     " << result.cost.polygons << " polygons, fill mean " << result.cost.fill_mean << ", max "
               << result.cost.fill_max << " fragments per pixel\n"
-              << "fallback: " << result.fallback.value_or("none") << "\n\nsteps:\n";
+              << "limits:   " << (result.limits.empty() ? "none" : describe(result.limits)) << "\n\nsteps:\n";
     print_steps(trace);
 }
 
 }  // namespace
 
 void run_inspect(const InspectOptions& options) {
-    const NamedMethod method = method_named(options.method);
-    const Settings settings = resolve_settings(method.name(), method.settings(), options.settings);
+    const Method& method = method_or_throw(options.method);
+    const Settings settings = resolve_settings(method.name, method.settings, options.settings);
     const Scene scene = load_scene(options.scene_file);
-    if (method.map)
-        inspect_map(options, *method.map, settings, scene);
+    if (method.makes_maps())
+        inspect_map(options, method, settings, scene);
     else
-        inspect_technique(options, *method.technique, settings, scene);
+        inspect_technique(options, method, settings, scene);
 }
 
 }  // namespace shadowlab

@@ -10,16 +10,15 @@
 #include "gui/inspector_app.hpp"
 #include "inspect_command.hpp"
 #include "measure_command.hpp"
+#include "registry/method.hpp"
 #include "render_command.hpp"
 #include "sweep_command.hpp"
 
 namespace {
 
-constexpr const char* kMethodNames = "uniform | focused | psm | lispsm | tsm | xpsm | volumes | planar";
-
 // The bundled scene: next to the sources in a build tree, or ./data from the repository root.
 std::string default_scene() {
-    for (const std::filesystem::path dir : {std::filesystem::path(SHADOWLAB_DATA_DIR), std::filesystem::path("data")})
+    for (const std::filesystem::path& dir : {std::filesystem::path(SHADOWLAB_DATA_DIR), std::filesystem::path("data")})
         if (std::filesystem::exists(dir / "scenes/default.json")) return (dir / "scenes/default.json").string();
     return "data/scenes/default.json";
 }
@@ -46,6 +45,7 @@ void parse_size(const std::string& text, int& width, int& height) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    const std::string method_help = shadowlab::method_names(" | ");
     CLI::App app{"ShadowLab: an inspector for shadow-map parameterizations"};
     app.require_subcommand(0, 1);
 
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> set_pairs;
     CLI::App* inspect_cmd = app.add_subcommand("inspect", "print a method's steps, matrices and fallbacks for a scene");
     inspect_cmd->add_option("scene", inspect.scene_file, "scene file (JSON)")->required();
-    inspect_cmd->add_option("--method,-m", inspect.method, kMethodNames)->capture_default_str();
+    inspect_cmd->add_option("--method,-m", inspect.method, method_help)->capture_default_str();
     inspect_cmd->add_option("--set", set_pairs, "a method setting, key=value (repeatable)");
     inspect_cmd->add_flag("--json", inspect.json, "print one JSON object instead of text");
 
@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     std::string size = "1280x720";
     CLI::App* measure_cmd = app.add_subcommand("measure", "a method's error against the exact reference, and its cost");
     measure_cmd->add_option("scene", measure.scene_file, "scene file (JSON)")->required();
-    measure_cmd->add_option("--method,-m", measure.method, kMethodNames)->capture_default_str();
+    measure_cmd->add_option("--method,-m", measure.method, method_help)->capture_default_str();
     measure_cmd->add_option("--resolution,-r", measure.resolution, "shadow map resolution (texels per side)")->capture_default_str();
     measure_cmd->add_option("--size", size, "camera image size WxH")->capture_default_str();
     measure_cmd->add_option("--bias", measure.bias, "depth bias in world units along the light (default: slope-scaled per pixel)");
@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
     std::string render_size = "1280x720";
     CLI::App* render_cmd = app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
     render_cmd->add_option("scene", render.scene_file, "scene file (JSON)")->required();
-    render_cmd->add_option("--method,-m", render.method, kMethodNames)->capture_default_str();
+    render_cmd->add_option("--method,-m", render.method, method_help)->capture_default_str();
     render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | error | stencil")->capture_default_str();
     render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
     render_cmd->add_option("--size", render_size, "image size WxH")->capture_default_str();

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "io/inspection_json.hpp"
+#include "limits.hpp"
 #include "metrics/measurement.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -21,7 +22,9 @@ Json to_json(const Measurement& m) {
             {"depth_step", {{"max", e.depth_step.max}, {"mean", e.depth_step.mean}, {"p95", e.depth_step.p95}}},
             {"setup_ms", m.setup_ms},
             {"raster_ms", m.raster_ms},
-            {"fallback", m.fallback ? Json(*m.fallback) : Json(nullptr)},
+            {"fallback", m.fallbacks.empty() ? Json(nullptr) : Json(describe(m.fallbacks))},
+            {"fallbacks", to_json(m.fallbacks)},
+            {"limits", to_json(m.limits)},
             {"bias", m.geometry ? Json(nullptr) : m.bias >= 0.0 ? Json(m.bias) : Json("slope-scaled")},
             {"receiver_pixels", e.receiver_pixels}};
     if (m.geometry) {
@@ -53,38 +56,26 @@ void print_text(const MeasureOptions& o, const Measurement& m) {
                   << "\n  depth step of a 24-bit map (world units): max " << e.depth_step.max << ", mean "
                   << e.depth_step.mean << ", p95 " << e.depth_step.p95 << "\n";
     std::cout << "  cost: setup " << m.setup_ms << " ms, raster " << m.raster_ms << " ms, total "
-              << m.setup_ms + m.raster_ms << " ms\n"
-              << "  fallback: " << m.fallback.value_or("none") << "\n";
+              << m.setup_ms + m.raster_ms << " ms\n";
+    if (m.geometry)
+        std::cout << "  limits: " << (m.limits.empty() ? "none" : describe(m.limits)) << "\n";
+    else
+        std::cout << "  fallback: " << (m.fallbacks.empty() ? "none" : describe(m.fallbacks)) << "\n";
 }
 
 }  // namespace
 
-NamedMethod method_named(const std::string& name) {
-    if (const Method* m = find_method(name)) return {m, nullptr};
-    if (const Technique* t = find_technique(name)) return {nullptr, t};
-    std::string known;
-    for (const Method& m : all_methods()) known += " " + m.name;
-    for (const Technique& t : all_techniques()) known += " " + t.name;
-    throw std::invalid_argument("unknown method '" + name + "' (known:" + known + ")");
-}
-
-std::vector<NamedMethod> methods_named(const std::vector<std::string>& names) {
-    std::vector<NamedMethod> methods;
-    for (const std::string& name : names) methods.push_back(method_named(name));
+std::vector<const Method*> methods_named(const std::vector<std::string>& names) {
+    std::vector<const Method*> methods;
+    for (const std::string& name : names) methods.push_back(&method_or_throw(name));
     if (!methods.empty()) return methods;
-    for (const Method& m : all_methods()) methods.push_back({&m, nullptr});
-    for (const Technique& t : all_techniques()) methods.push_back({nullptr, &t});
+    for (const Method& m : all_methods()) methods.push_back(&m);
     return methods;
 }
 
-Measurement measure_named(const MeasureContext& context, const NamedMethod& method, const Settings& settings,
-                          int resolution, double bias) {
-    return method.map ? measure_method(context, *method.map, settings, resolution, bias)
-                      : measure_technique(context, *method.technique, settings);
-}
-
 MeasureContext prepare_with_progress(const std::string& scene_file, int width, int height) {
-    if (width < 1 || height < 1) throw std::invalid_argument("--size: expected positive WxH");
+    limits::check(limits::image_side, "--size width", width);
+    limits::check(limits::image_side, "--size height", height);
     const Scene scene = load_scene(scene_file);
     std::cerr << "measure: exact reference of " << scene_file << " (" << width << "x" << height << ", Embree rays)..."
               << std::flush;
@@ -98,23 +89,18 @@ MeasureContext prepare_with_progress(const std::string& scene_file, int width, i
 void add_error_point(ChartSeries& series, double x, const Measurement& m) {
     series.x.push_back(x);
     series.y.push_back(100.0 * m.error.misclassified);
-    series.marked.push_back(m.fallback.has_value());
-}
-
-void check_resolution(int resolution) {
-    if (resolution < 1 || resolution > 16384)
-        throw std::invalid_argument("--resolution: expected 1 to 16384, got " + std::to_string(resolution));
+    series.marked.push_back(!m.notes().empty());
 }
 
 void run_measure(const MeasureOptions& o) {
-    const NamedMethod method = method_named(o.method);
-    check_resolution(o.resolution);
-    const Settings settings = resolve_settings(method.name(), method.settings(), o.settings);
+    const Method& method = method_or_throw(o.method);
+    limits::check(limits::map_resolution, "--resolution", o.resolution);
+    const Settings settings = resolve_settings(method.name, method.settings, o.settings);
     const MeasureContext context = prepare_with_progress(o.scene_file, o.width, o.height);
-    std::cerr << "measure: " << method.name();
-    if (method.map) std::cerr << " at " << o.resolution << "^2";
+    std::cerr << "measure: " << method.name;
+    if (method.makes_maps()) std::cerr << " at " << o.resolution << "^2";
     std::cerr << "...\n";
-    const Measurement m = measure_named(context, method, settings, o.resolution, o.bias);
+    const Measurement m = measure(context, method, settings, o.resolution, o.bias);
     if (o.json)
         std::cout << to_json(m).dump(1) << "\n";
     else

@@ -3,7 +3,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "render/offscreen_view.hpp"
+#include "limits.hpp"
+#include "views/offscreen_view.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace shadowlab {
@@ -19,9 +20,8 @@ ViewKind view_or_throw(const std::string& name) {
 }  // namespace
 
 void run_render(const RenderOptions& options) {
-    if (options.width < 16 || options.height < 16 || options.width > 8192 || options.height > 8192)
-        throw std::invalid_argument("--size: " + std::to_string(options.width) + "x" + std::to_string(options.height) +
-                                    " is outside 16..8192 per side");
+    limits::check(limits::image_side, "--size width", options.width);
+    limits::check(limits::image_side, "--size height", options.height);
     const ViewKind view = view_or_throw(options.view);
     Scene scene = load_scene(options.scene_file);
     scene.camera.aspect = static_cast<double>(options.width) / options.height;  // the image is the camera's
@@ -33,7 +33,8 @@ void run_render(const RenderOptions& options) {
     request.image_width = options.width;  // a technique judges the pixels of this very image
     request.image_height = options.height;
     const Inspection inspection = inspect_scene(scene, request);
-    if (inspection.fallback()) std::cerr << "fallback: " << *inspection.fallback() << "\n";
+    if (!inspection.notes().empty())
+        std::cerr << (inspection.has_map() ? "fallback: " : "limits: ") << describe(inspection.notes()) << "\n";
     ViewOptions view_options;
     view_options.step = options.step;
     const RgbImage image = render_view(inspection, view, view_options, options.width, options.height);

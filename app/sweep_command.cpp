@@ -6,6 +6,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "limits.hpp"
 #include "measure_command.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -37,13 +38,13 @@ struct SweepSeries {
     std::vector<std::vector<Measurement>> per_method;  // [method][value]
 };
 
-ChartSpec error_against(const SweepSeries& sweep, const std::vector<NamedMethod>& methods, const std::string& title,
+ChartSpec error_against(const SweepSeries& sweep, const std::vector<const Method*>& methods, const std::string& title,
                         const std::string& x_title) {
-    ChartSpec chart{title, x_title, "misclassified receiver pixels (%)   (x: a fallback was taken)", true, false,
+    ChartSpec chart{title, x_title, "misclassified receiver pixels (%)   (x: a fallback or a named limit)", true, false,
                     900, 600, {}};
     for (size_t k = 0; k < methods.size(); ++k) {
         ChartSeries series;
-        series.name = methods[k].name();
+        series.name = methods[k]->name;
         for (size_t i = 0; i < sweep.values.size(); ++i) add_error_point(series, sweep.values[i], sweep.per_method[k][i]);
         chart.series.push_back(std::move(series));
     }
@@ -54,8 +55,8 @@ ChartSpec error_against(const SweepSeries& sweep, const std::vector<NamedMethod>
 
 void run_sweep(const SweepOptions& o) {
     if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
-    check_resolution(o.resolution);
-    const std::vector<NamedMethod> methods = methods_named(o.methods);
+    limits::check(limits::map_resolution, "--resolution", o.resolution);
+    const std::vector<const Method*> methods = methods_named(o.methods);
     const Scene base = load_scene(o.scene_file);
     std::filesystem::create_directories(o.out_dir);
     const std::filesystem::path dir(o.out_dir);
@@ -69,11 +70,11 @@ void run_sweep(const SweepOptions& o) {
             std::cerr << "sweep: " << quantity << " = " << values[i] << " [" << i + 1 << "/" << values.size() << "]\n";
             const MeasureContext context = prepare_measurement(scene_at(values[i]), o.width, o.height);
             for (size_t k = 0; k < methods.size(); ++k) {
-                const Settings settings = resolve_settings(methods[k].name(), methods[k].settings(), {});
-                const Measurement m = measure_named(context, methods[k], settings, o.resolution, -1.0);
+                const Settings settings = resolve_settings(methods[k]->name, methods[k]->settings, {});
+                const Measurement m = measure(context, *methods[k], settings, o.resolution, -1.0);
                 csv << quantity << ',' << values[i] << ',' << m.method << ',' << m.error.misclassified << ','
                     << m.error.false_shadow << ',' << m.error.false_light << ',' << m.error.m.mean << ','
-                    << m.error.m.p95 << ",\"" << m.fallback.value_or("") << "\"\n";
+                    << m.error.m.p95 << ",\"" << describe(m.notes()) << "\"\n";
                 s.per_method[k].push_back(m);
             }
         }

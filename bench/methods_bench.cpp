@@ -1,10 +1,13 @@
-// Method setup time (inputs gathered per view + the method), and the intersection body per kernel.
+// Method setup time (inputs gathered per view + the method), for every map method of the registry
+// (default settings at three town sizes, traced, and each other choice of its choice settings), and
+// the intersection body per kernel.
 #include <benchmark/benchmark.h>
 
+#include <map>
 #include <random>
 
 #include "geometry/intersection_body.hpp"
-#include "methods/method.hpp"
+#include "registry/method.hpp"
 #include "scene/scene.hpp"
 
 using namespace shadowlab;
@@ -35,20 +38,37 @@ Scene town(int count) {
     return scene;
 }
 
-void method_setup(benchmark::State& state, const std::string& name, const std::string& kernel, bool traced) {
+void method_setup(benchmark::State& state, const Method* method, const std::map<std::string, std::string>& set,
+                  bool traced) {
     const Scene scene = town(int(state.range(0)));
     const std::vector<ObjectBox> boxes = object_boxes(scene);
-    const Method& method = *find_method(name);
-    std::map<std::string, std::string> set;
-    if (!kernel.empty()) set["kernel"] = kernel;
-    const Settings settings = resolve_settings(name, method.settings, set);
+    const Settings settings = resolve_settings(method->name, method->settings, set);
     for (auto _ : state) {
         const ShadowInputs inputs = gather_inputs(scene.camera, scene.light, boxes);
         Trace trace;
-        ShadowSetup setup = method.compute(inputs, settings, traced ? &trace : nullptr);
+        ShadowSetup setup = method->compute_maps(inputs, settings, traced ? &trace : nullptr);
         benchmark::DoNotOptimize(setup);
     }
 }
+
+// method_setup/<name>, <name>_traced and <name>_<choice> for every map method.
+const bool registered = [] {
+    for (const Method& m : all_methods()) {
+        if (!m.makes_maps()) continue;
+        const std::string name = "method_setup/" + m.name;
+        benchmark::RegisterBenchmark(name.c_str(), method_setup, &m, std::map<std::string, std::string>{}, false)
+            ->Arg(10)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+        benchmark::RegisterBenchmark((name + "_traced").c_str(), method_setup, &m, std::map<std::string, std::string>{}, true)
+            ->Arg(1000)->Unit(benchmark::kMicrosecond);
+        for (const SettingSpec& spec : m.settings)
+            for (const std::string& choice : spec.choices)
+                if (choice != spec.default_value)
+                    benchmark::RegisterBenchmark((name + "_" + choice).c_str(), method_setup, &m,
+                                                 std::map<std::string, std::string>{{spec.name, choice}}, false)
+                        ->Arg(1000)->Unit(benchmark::kMicrosecond);
+    }
+    return true;
+}();
 
 void body(benchmark::State& state, BodyKernel kernel) {
     const Scene scene = town(1000);
@@ -60,16 +80,6 @@ void body(benchmark::State& state, BodyKernel kernel) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(method_setup, uniform, "uniform", "", false)->Arg(10)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, focused_float, "focused", "float", false)->Arg(10)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, focused_float_traced, "focused", "float", true)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, focused_epick, "focused", "epick", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, focused_epeck, "focused", "epeck", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, psm, "psm", "float", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, lispsm, "lispsm", "float", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, tsm, "tsm", "float", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, xpsm, "xpsm", "float", false)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(method_setup, xpsm_traced, "xpsm", "float", true)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(body, float_clipper, BodyKernel::float_clipper)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(body, epick, BodyKernel::epick)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(body, epeck, BodyKernel::epeck)->Unit(benchmark::kMicrosecond);

@@ -4,8 +4,8 @@
 #include <benchmark/benchmark.h>
 
 #include "reference/exact_shadows.hpp"
+#include "registry/method.hpp"
 #include "scene/scene_loader.hpp"
-#include "techniques/technique.hpp"
 #include "volumes/edge_topology.hpp"
 #include "volumes/shadow_volume.hpp"
 #include "volumes/silhouette.hpp"
@@ -38,9 +38,9 @@ void volumes_technique(benchmark::State& state, const std::string& name, const s
     const Scene scene = scene_named(name);
     const WorldTriangles triangles = tessellate(scene);
     const ReferenceImage image = exact_reference(scene, triangles, 640, 360);
-    const Technique& volumes = *find_technique("volumes");
+    const Method& volumes = *find_method("volumes");
     const Settings settings = resolve_settings("volumes", volumes.settings, {{"count", count}});
-    for (auto _ : state) benchmark::DoNotOptimize(volumes.compute(scene, triangles, image, settings, nullptr));
+    for (auto _ : state) benchmark::DoNotOptimize(volumes.compute_geometry(scene, triangles, image, settings, nullptr));
 }
 
 }  // namespace

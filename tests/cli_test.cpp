@@ -11,7 +11,6 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
-#include "methods/fallbacks.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
@@ -21,6 +20,17 @@ using shadowlab::testing::slurp;
 using shadowlab::testing::source_path;
 
 namespace {
+
+// Each entry of a "fallbacks" or "limits" array names a kind of note of that category.
+bool notes_of_category(const nlohmann::json& notes, shadowlab::NoteCategory category) {
+    for (const auto& note : notes) {
+        bool known = false;
+        for (const shadowlab::NoteInfo& info : shadowlab::all_note_kinds())
+            known |= note["kind"] == info.name && info.category == category && !note["message"].get<std::string>().empty();
+        if (!known) return false;
+    }
+    return true;
+}
 
 std::map<std::string, std::string> expected_bad_scenes() {
     std::map<std::string, std::string> expected;
@@ -133,14 +143,15 @@ TEST(Cli, TextInspectionNamesTheStepsAndTheFallback) {
 TEST(Cli, EveryMethodOnEveryHardCaseGivesAMapOrANamedFallback) {
     for (const char* scene : {"default", "light_parallel_behind", "light_parallel_front", "casters_behind",
                               "light_overhead", "far_near_1e5"})
-        for (const char* method : {"uniform", "focused", "psm", "lispsm", "tsm", "xpsm"}) {
+        for (const shadowlab::Method* m : shadowlab::testing::map_methods()) {
+            const std::string& method = m->name;
             const CliResult r = run_cli("inspect " + source_path(std::string("data/scenes/") + scene + ".json") +
                                         " --json --method " + method);
             ASSERT_EQ(r.exit_code, 0) << scene << " " << method << ": " << r.err;
             const nlohmann::json j = nlohmann::json::parse(r.out);
             EXPECT_GE(j["steps"].size(), 5u) << scene << " " << method;
-            if (!j["fallback"].is_null())
-                EXPECT_TRUE(shadowlab::fallback::is_named(j["fallback"].get<std::string>())) << j["fallback"];
+            EXPECT_EQ(j["fallback"].is_null(), j["fallbacks"].empty()) << j["fallback"];
+            EXPECT_TRUE(notes_of_category(j["fallbacks"], shadowlab::NoteCategory::fallback)) << j["fallbacks"];
             for (const auto& row : j["maps"].at(0)["world_to_uvz"])
                 for (const auto& x : row) EXPECT_TRUE(x.is_number()) << scene << " " << method << ": not finite";
         }
@@ -225,7 +236,7 @@ TEST(Cli, InspectVolumesListsSilhouetteEdgesAndQuadsAtInfinity) {
     const nlohmann::json j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["method"], "volumes");
     EXPECT_EQ(j["settings"]["count"], "zfail");
-    EXPECT_TRUE(j["fallback"].is_null()) << j["fallback"];
+    EXPECT_TRUE(j["limits"].empty()) << j["limits"];
     std::map<std::string, nlohmann::json> geometry;
     for (const auto& step : j["steps"])
         for (const auto& g : step["geometry"]) geometry[step["id"].get<std::string>() + "/" + g["kind"].get<std::string>()] = g;
@@ -248,13 +259,16 @@ TEST(Cli, MeasureVolumesPrintsTheMapKeysAndItsOwn) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(r.out);
     for (const char* key : {"method", "resolution", "misclassified", "false_shadow", "false_light", "m", "setup_ms",
-                            "raster_ms", "fallback", "polygons", "fill_mean", "fill_max"})
+                            "raster_ms", "fallback", "limits", "polygons", "fill_mean", "fill_max"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_EQ(j["resolution"], 0);
     EXPECT_EQ(j["m"]["max"], 0.0);
     EXPECT_GT(j["polygons"].get<int>(), 0);
     EXPECT_GE(j["fill_max"].get<double>(), j["fill_mean"].get<double>());
-    EXPECT_EQ(j["fallback"].get<std::string>().rfind(shadowlab::fallback::eye_in_volume, 0), 0u) << j["fallback"];
+    EXPECT_TRUE(j["fallback"].is_null()) << "a technique's limits are not fallbacks: " << j["fallback"];
+    ASSERT_TRUE(notes_of_category(j["limits"], shadowlab::NoteCategory::limit)) << j["limits"];
+    ASSERT_EQ(j["limits"].size(), 1u) << j["limits"];
+    EXPECT_EQ(j["limits"][0]["kind"], shadowlab::to_string(shadowlab::NoteKind::eye_in_volume));
     EXPECT_GT(j["misclassified"].get<double>(), 0.3) << "z-pass from inside a volume";
 }
 

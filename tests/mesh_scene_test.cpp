@@ -1,7 +1,7 @@
 // A lone mesh becomes a scene the methods can work on: on a ground plane, in view, under a sun.
 #include <gtest/gtest.h>
 
-#include "methods/method.hpp"
+#include "registry/method.hpp"
 #include "scene/mesh_scene.hpp"
 #include "scene/scene_error.hpp"
 #include "test_support.hpp"
@@ -16,8 +16,8 @@ TEST(MeshScene, MeshStandsOnTheGroundInFrontOfTheCamera) {
     EXPECT_TRUE(scene.camera.frustum().contains(0.5 * (mesh.min + mesh.max)));
     const Method& focused = *find_method("focused");
     const ShadowSetup setup =
-        focused.compute(gather_inputs(scene), resolve_settings("focused", focused.settings, {}), nullptr);
-    EXPECT_FALSE(setup.fallback.has_value());
+        focused.compute_maps(gather_inputs(scene), resolve_settings("focused", focused.settings, {}), nullptr);
+    EXPECT_TRUE(setup.fallbacks.empty());
 }
 
 TEST(MeshScene, MissingFileIsNamed) {

@@ -2,7 +2,7 @@
 // and misclassification shares on a scene where the answer is known.
 #include <gtest/gtest.h>
 
-#include "methods/method.hpp"
+#include "registry/method.hpp"
 #include "metrics/measurement.hpp"
 #include "metrics/shadow_error.hpp"
 #include "scene/scene_loader.hpp"
@@ -38,11 +38,11 @@ Scene overhead_scene() {
 
 ShadowError measure(const Scene& scene, const std::string& method, int resolution, int pixels) {
     const Method& m = *find_method(method);
-    const ShadowSetup setup = m.compute(gather_inputs(scene), resolve_settings(method, m.settings, {}), nullptr);
+    const ShadowSetup setup = m.compute_maps(gather_inputs(scene), resolve_settings(method, m.settings, {}), nullptr);
     const WorldTriangles triangles = tessellate(scene);
     const ReferenceImage reference = exact_reference(scene, triangles, pixels, pixels);
-    const DepthMap depth = rasterize_depth(triangles, caster_flags(scene), setup.maps[0], resolution);
-    return measure_shadow_error(scene, reference, depth, setup.maps[0], 0.05);
+    const DepthMap depth = rasterize_depth(triangles, caster_flags(scene), setup, resolution);
+    return measure_shadow_error(scene, reference, depth, setup, 0.05);
 }
 
 }  // namespace
@@ -90,7 +90,7 @@ TEST(Metrics, MisclassificationIsSmallAndSplitByKind) {
 TEST(Metrics, DepthStepOfAnOrthographicMapIsItsDepthRangeOver2To24) {
     const Scene scene = overhead_scene();
     const Method& uniform = *find_method("uniform");
-    const ShadowMap map = uniform.compute(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
+    const ShadowMap map = uniform.compute_maps(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
     // The uniform map's depth spans the scene's height (the box: 4 units) over [0, 1].
     EXPECT_NEAR(world_per_depth_unit(map, scene.light.direction, {10, 0, 10}), 4.0, 1e-9);
     const ShadowError e = measure(scene, "uniform", 256, 81);
@@ -106,7 +106,7 @@ TEST(Metrics, MethodsRankAsTheLiteratureSaysUnderAnOverheadLight) {
     const MeasureContext context = prepare_measurement(scene, 480, 270);
     auto max_m = [&](const std::string& name) {
         const Method& m = *find_method(name);
-        return measure_method(context, m, resolve_settings(name, m.settings, {}), 1024, -1.0).error.m.max;
+        return shadowlab::measure(context, m, resolve_settings(name, m.settings, {}), 1024, -1.0).error.m.max;
     };
     const double uniform = max_m("uniform"), focused = max_m("focused");
     EXPECT_GT(uniform, focused);
@@ -117,7 +117,7 @@ TEST(Metrics, MethodsRankAsTheLiteratureSaysUnderAnOverheadLight) {
 TEST(Metrics, SlopeScaledBiasIsTheTexelSizeTimesOnePlusTanTheta) {
     const Scene scene = overhead_scene();
     const Method& uniform = *find_method("uniform");
-    const ShadowMap map = uniform.compute(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
+    const ShadowMap map = uniform.compute_maps(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
     // A 100-unit map of 500 texels: 0.2 units a texel; the ground faces the light (θ = 0).
     EXPECT_NEAR(slope_scaled_bias(map, 500, scene.light.direction, {10, 0, 10}, 1.0), 0.2, 1e-6);
     // A face at 45° to the light needs twice that.

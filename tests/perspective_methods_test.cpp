@@ -3,9 +3,8 @@
 
 #include <numeric>
 
-#include "methods/fallbacks.hpp"
 #include "methods/lispsm.hpp"
-#include "methods/method.hpp"
+#include "registry/method.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 
@@ -22,7 +21,7 @@ struct Traced {
 Traced run(const std::string& method, const ShadowInputs& in, const std::map<std::string, std::string>& set = {}) {
     const Method& m = *find_method(method);
     Traced r;
-    r.setup = m.compute(in, resolve_settings(method, m.settings, set), &r.trace);
+    r.setup = m.compute_maps(in, resolve_settings(method, m.settings, set), &r.trace);
     return r;
 }
 
@@ -59,7 +58,7 @@ TEST(Lispsm, WarpFadesSmoothlyToTheFocusedMapAsTheLightTurnsParallel) {
     for (double gamma : {1.0, 0.3, 0.1, 1e-2, 1e-3, 1e-4, 1e-5}) {
         scene.light.direction = std::cos(gamma) * view + std::sin(gamma) * side;
         const Traced r = run("lispsm", gather_inputs(scene));
-        ASSERT_FALSE(r.setup.fallback.has_value()) << "γ = " << gamma;
+        ASSERT_TRUE(r.setup.fallbacks.empty()) << "γ = " << gamma;
         const double ratio = value(r.trace, "n-opt", "n") / value(r.trace, "n-opt", "z_f");
         EXPECT_GT(ratio, previous_ratio) << "n grows relative to the body as γ shrinks";
         previous_ratio = ratio;
@@ -67,14 +66,14 @@ TEST(Lispsm, WarpFadesSmoothlyToTheFocusedMapAsTheLightTurnsParallel) {
     scene.light.direction = std::cos(1e-8) * view + std::sin(1e-8) * side;
     const ShadowInputs in = gather_inputs(scene);
     const Traced parallel = run("lispsm", in);
-    ASSERT_TRUE(parallel.setup.fallback.has_value());
-    EXPECT_EQ(parallel.setup.fallback->rfind(fallback::parallel_light, 0), 0u);
+    ASSERT_FALSE(parallel.setup.fallbacks.empty());
+    EXPECT_TRUE(has_note(parallel.setup.fallbacks, NoteKind::parallel_light));
     // Just before the fallback (n = 4e3 times the depth) the warp is already (almost) the focused map.
     scene.light.direction = std::cos(5e-7) * view + std::sin(5e-7) * side;
     const glm::dmat4 warped = run("lispsm", gather_inputs(scene)).setup.maps[0].world_to_uvz;
     for (const glm::dvec3& p : in.receiver_points()) {
         if (!in.frustum.contains(p)) continue;
-        const glm::dvec3 a = world_to_uvz(parallel.setup.maps[0], p), b = world_to_uvz({warped}, p);
+        const glm::dvec3 a = world_to_uvz(parallel.setup.maps[0], p), b = world_to_uvz(ShadowMap{.world_to_uvz = warped}, p);
         EXPECT_NEAR(glm::length(a - b), 0.0, 1e-3);
     }
 }
@@ -82,7 +81,7 @@ TEST(Lispsm, WarpFadesSmoothlyToTheFocusedMapAsTheLightTurnsParallel) {
 TEST(Lispsm, EtaMinusOneIsTheFocusedMapWithoutAFallback) {
     const ShadowInputs in = scene_inputs("default");
     const Traced r = run("lispsm", in, {{"eta", "-1"}});
-    EXPECT_FALSE(r.setup.fallback.has_value());
+    EXPECT_TRUE(r.setup.fallbacks.empty());
     EXPECT_EQ(r.setup.maps[0].world_to_uvz, run("focused", in).setup.maps[0].world_to_uvz);
 }
 
@@ -90,7 +89,7 @@ TEST(Xpsm, FocusRegionMapsExactlyOntoTheUnitSquare) {
     for (const char* name : {"default", "light_overhead", "casters_behind", "far_near_1e5"}) {
         const ShadowInputs in = scene_inputs(name);
         const Traced r = run("xpsm", in);
-        ASSERT_FALSE(r.setup.fallback.has_value()) << name;
+        ASSERT_TRUE(r.setup.fallbacks.empty()) << name;
         const glm::dmat4& m = r.setup.maps[0].world_to_uvz;
         // The caster and receiver points XPSM kept (w ≥ εW), through the final map.
         auto box_of = [&](const char* step, const char* shape) {
@@ -134,8 +133,8 @@ TEST(Xpsm, TraceFollowsThePapersStepsInOrder) {
 
 TEST(Xpsm, MinersLampIsANamedFallback) {
     const Traced r = run("xpsm", scene_inputs("light_parallel_behind"));
-    ASSERT_TRUE(r.setup.fallback.has_value());
-    EXPECT_EQ(r.setup.fallback->rfind(fallback::miners_lamp, 0), 0u);
+    ASSERT_FALSE(r.setup.fallbacks.empty());
+    EXPECT_TRUE(has_note(r.setup.fallbacks, NoteKind::miners_lamp));
     EXPECT_LT(value(r.trace, "xpsm-3", "abs_V_xy"), 0.1);
 }
 

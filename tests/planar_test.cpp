@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "math/matrix.hpp"
-#include "methods/fallbacks.hpp"
 #include "metrics/measurement.hpp"
 #include "planar/planar_projection.hpp"
 #include "scene/scene_loader.hpp"
@@ -15,7 +14,7 @@ using shadowlab::testing::source_path;
 namespace {
 
 Measurement measure_planar(const MeasureContext& context) {
-    return measure_technique(context, *find_technique("planar"), Settings{});
+    return measure(context, *find_method("planar"), Settings{}, 0, 0.0);
 }
 
 // One box over a ground, light almost overhead.
@@ -55,7 +54,7 @@ TEST(Planar, MatchesTheExactReferenceOnItsPlane) {
         const Measurement m = measure_planar(context);
         EXPECT_GT(m.error.receiver_pixels, 480u * 270u / 4) << name;
         EXPECT_LE(m.error.misclassified, 1e-3) << name;
-        EXPECT_FALSE(m.fallback) << name << ": " << *m.fallback;
+        EXPECT_TRUE(m.limits.empty()) << name << ": " << describe(m.limits);
         EXPECT_GT(m.geometry->polygons, 0u);
     }
 }
@@ -63,9 +62,9 @@ TEST(Planar, MatchesTheExactReferenceOnItsPlane) {
 TEST(Planar, OtherReceiversAreNamedAndLeftLit) {
     const MeasureContext context = prepare_measurement(box_scene(), 320, 180);
     const Measurement m = measure_planar(context);
-    ASSERT_TRUE(m.fallback);
-    EXPECT_EQ(m.fallback->rfind(fallback::not_planar_receiver, 0), 0u) << *m.fallback;
-    EXPECT_NE(m.fallback->find("'box'"), std::string::npos) << *m.fallback;
+    ASSERT_FALSE(m.limits.empty());
+    EXPECT_TRUE(shadowlab::testing::has_note(m.limits, NoteKind::not_planar_receiver)) << describe(m.limits);
+    EXPECT_NE(describe(m.limits).find("'box'"), std::string::npos) << describe(m.limits);
 }
 
 TEST(Planar, CastersBelowThePlaneThrowFalseShadowsAndAreNamed) {
@@ -74,8 +73,8 @@ TEST(Planar, CastersBelowThePlaneThrowFalseShadowsAndAreNamed) {
     scene.objects[1].position.y = -0.5;  // the box sinks halfway into the ground
     const MeasureContext context = prepare_measurement(scene, 320, 180);
     const Measurement m = measure_planar(context);
-    ASSERT_TRUE(m.fallback);
-    EXPECT_NE(m.fallback->find(fallback::below_plane), std::string::npos) << *m.fallback;
+    ASSERT_FALSE(m.limits.empty());
+    EXPECT_TRUE(shadowlab::testing::has_note(m.limits, NoteKind::below_plane)) << describe(m.limits);
     EXPECT_GT(m.error.false_shadow, 0.001) << "the buried half shadows the plane";
 }
 
@@ -90,7 +89,7 @@ TEST(Planar, CastersBeyondTheLightAreClippedAndNamed) {
     for (SceneObject& o : scene.objects) o.receives = o.shape == Shape::plane;
     const MeasureContext context = prepare_measurement(scene, 320, 180);
     const Measurement m = measure_planar(context);
-    ASSERT_TRUE(m.fallback);
-    EXPECT_NE(m.fallback->find(fallback::beyond_light), std::string::npos) << *m.fallback;
+    ASSERT_FALSE(m.limits.empty());
+    EXPECT_TRUE(shadowlab::testing::has_note(m.limits, NoteKind::beyond_light)) << describe(m.limits);
     EXPECT_LE(m.error.misclassified, 1e-3) << "clipped at w = 0: no anti-shadow";
 }

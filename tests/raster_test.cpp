@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "maps/map_lookup.hpp"
 #include "raster/depth_map.hpp"
 
 using namespace shadowlab;
@@ -14,6 +15,9 @@ namespace {
 constexpr int kResolution = 64;
 
 // Light from above: u = x / 8 + 1/2, v = z / 8 + 1/2, d = (5 - y) / 10, so z_bias_scale = 1/10.
+// A setup of one map, as most methods give.
+ShadowSetup one_map(const ShadowMap& map) { return ShadowSetup{.maps = {map}}; }
+
 ShadowMap overhead_map() {
     ShadowMap map;
     map.world_to_uvz = glm::transpose(glm::dmat4(0.125, 0.0, 0.0, 0.5,  //
@@ -81,7 +85,7 @@ RayHit intersect(const glm::dvec3& direction, const glm::dvec3& a, const glm::dv
 
 TEST(RasterOrthographic, SquareCoversExactlyTheTexelsWhoseCentresItContains) {
     const double x0 = -1.3, x1 = 1.1, z0 = -0.7, z1 = 2.1;  // edges 21.6, 40.8, 26.4, 48.8 texels: off centres
-    const DepthMap map = rasterize_depth(square(x0, x1, z0, z1, 1.0), {true}, overhead_map(), kResolution);
+    const DepthMap map = rasterize_depth(square(x0, x1, z0, z1, 1.0), {true}, one_map(overhead_map()), kResolution);
     ASSERT_EQ(map.depth.size(), static_cast<std::size_t>(kResolution * kResolution));
     for (int y = 0; y < kResolution; ++y)
         for (int x = 0; x < kResolution; ++x) {
@@ -95,7 +99,7 @@ TEST(RasterOrthographic, CentresOnEdgesFollowTheTopLeftRule) {
     // Edges through the centres 16.5 and 32.5 (in texels) on both axes; the diagonal shared by the
     // two triangles passes through the centres (k + 0.5, k + 0.5).
     const double lo = world_of(16.5 / kResolution), hi = world_of(32.5 / kResolution);
-    const DepthMap map = rasterize_depth(square(lo, hi, lo, hi, 1.0), {true}, overhead_map(), kResolution);
+    const DepthMap map = rasterize_depth(square(lo, hi, lo, hi, 1.0), {true}, one_map(overhead_map()), kResolution);
     // The low-u edge and the high-v edge own their centres; the other two do not.
     for (int y = 0; y < kResolution; ++y)
         for (int x = 0; x < kResolution; ++x)
@@ -123,7 +127,7 @@ TEST(RasterOrthographic, EdgesSharedThroughTexelCentresLeaveNoGap) {
         const auto world = [](const glm::dvec2& p) { return glm::dvec3(p.x, 0.0, p.y); };
         WorldTriangles diamond;
         add_quad(diamond, world(a), world(left), world(b), world(right));
-        ASSERT_TRUE(covered(rasterize_depth(diamond, {true}, map, kResolution), 32, 32)) << "trial " << trial;
+        ASSERT_TRUE(covered(rasterize_depth(diamond, {true}, one_map(map), kResolution), 32, 32)) << "trial " << trial;
     }
 }
 
@@ -132,7 +136,7 @@ TEST(RasterOrthographic, StoredDepthIsTheAnalyticDepthAtTexelCentres) {
     const auto height = [](double x, double z) { return 1.0 + 0.3 * x + 0.2 * z; };
     WorldTriangles tilted;
     add_quad(tilted, {-2, height(-2, -2), -2}, {-2, height(-2, 2), 2}, {2, height(2, 2), 2}, {2, height(2, -2), -2});
-    const DepthMap map = rasterize_depth(tilted, {true}, overhead_map(), kResolution);
+    const DepthMap map = rasterize_depth(tilted, {true}, one_map(overhead_map()), kResolution);
     int checked = 0;
     for (int y = 0; y < kResolution; ++y)
         for (int x = 0; x < kResolution; ++x) {
@@ -150,7 +154,7 @@ TEST(RasterOrthographic, KeepsTheNearestCasterAndSkipsNonCasters) {
     add_quad(scene, {-1, 3, -1}, {-1, 3, 1}, {1, 3, 1}, {1, 3, -1}, 1);                  // high caster
     add_quad(scene, {-3, 4, -3}, {-3, 4, 3}, {3, 4, 3}, {3, 4, -3}, 2);                  // above all, casts not
     add_quad(scene, {-1.5, 2, -1.5}, {-1.5, 2, 1.5}, {1.5, 2, 1.5}, {1.5, 2, -1.5}, 3);  // middle, drawn last
-    const DepthMap map = rasterize_depth(scene, {true, true, false, true}, overhead_map(), kResolution);
+    const DepthMap map = rasterize_depth(scene, {true, true, false, true}, one_map(overhead_map()), kResolution);
     const int row = kResolution / 2;  // z = 0.06; the columns below are at x = 0.06, 1.31, 1.81, 2.94
     EXPECT_NEAR(map.at(32, row), overhead_depth(3.0), 1e-7);
     EXPECT_NEAR(map.at(42, row), overhead_depth(2.0), 1e-7);
@@ -165,7 +169,7 @@ TEST(RasterPerspective, TriangleStraddlingTheLightIsDrawnOnlyWhereWIsPositive) {
     const glm::dvec3 a(0.0, 0.0, -2.0), b(1.0, 0.0, -2.0), c(-0.5, 0.5, 1.0);
     const ShadowMap map = spot_map();
     WorldTriangles triangle{{a, b, c}, {{0, 1, 2}}, {0}};
-    const DepthMap depth = rasterize_depth(triangle, {true}, map, kResolution);
+    const DepthMap depth = rasterize_depth(triangle, {true}, one_map(map), kResolution);
 
     int inside = 0;
     for (int y = 0; y < kResolution; ++y)
@@ -193,23 +197,23 @@ TEST(RasterPerspective, TriangleStraddlingTheLightIsDrawnOnlyWhereWIsPositive) {
 
 TEST(RasterLookup, ShadowedUnderTheCasterLitBesideItAndTheBiasMovesTheDecision) {
     const ShadowMap map = overhead_map();
-    const DepthMap depth = rasterize_depth(square(-1, 1, -1, 1, 1.0), {true}, map, kResolution);
+    const DepthMap depth = rasterize_depth(square(-1, 1, -1, 1, 1.0), {true}, one_map(map), kResolution);
     const glm::dvec3 under(0.1, 0.95, 0.2);  // 0.05 below the caster
-    EXPECT_TRUE(in_shadow(depth, map, under, 0.0));
-    EXPECT_TRUE(in_shadow(depth, map, under, 0.04));
-    EXPECT_FALSE(in_shadow(depth, map, under, 0.06));
-    EXPECT_FALSE(in_shadow(depth, map, {3.0, 0.0, 0.2}, 0.0));  // beside it
-    EXPECT_FALSE(in_shadow(depth, map, {0.1, 1.5, 0.2}, 0.0));  // above it
+    EXPECT_TRUE(in_shadow(depth, one_map(map), under, 0.0));
+    EXPECT_TRUE(in_shadow(depth, one_map(map), under, 0.04));
+    EXPECT_FALSE(in_shadow(depth, one_map(map), under, 0.06));
+    EXPECT_FALSE(in_shadow(depth, one_map(map), {3.0, 0.0, 0.2}, 0.0));  // beside it
+    EXPECT_FALSE(in_shadow(depth, one_map(map), {0.1, 1.5, 0.2}, 0.0));  // above it
 }
 
 TEST(RasterLookup, PointsOffTheMapAreLit) {
     // Every texel holds depth 0: any point the lookup places on the map is shadowed.
     const DepthMap full{kResolution, std::vector<float>(kResolution * kResolution, 0.0f)};
     const ShadowMap spot = spot_map();
-    EXPECT_TRUE(in_shadow(full, spot, {0.0, 0.0, -2.0}, 0.0));
-    EXPECT_FALSE(in_shadow(full, spot, {-0.5, 0.5, 1.0}, 0.0));  // behind the light: w < 0, u, v inside
-    EXPECT_FALSE(in_shadow(full, spot, {3.0, 0.0, -2.0}, 0.0));  // u > 1
+    EXPECT_TRUE(in_shadow(full, one_map(spot), {0.0, 0.0, -2.0}, 0.0));
+    EXPECT_FALSE(in_shadow(full, one_map(spot), {-0.5, 0.5, 1.0}, 0.0));  // behind the light: w < 0, u, v inside
+    EXPECT_FALSE(in_shadow(full, one_map(spot), {3.0, 0.0, -2.0}, 0.0));  // u > 1
     const ShadowMap overhead = overhead_map();
-    EXPECT_FALSE(in_shadow(full, overhead, {0.0, 0.0, -4.5}, 0.0));  // v < 0
-    EXPECT_TRUE(in_shadow(full, overhead, {4.0, 0.0, 4.0}, 0.0));    // u = v = 1: the last texel
+    EXPECT_FALSE(in_shadow(full, one_map(overhead), {0.0, 0.0, -4.5}, 0.0));  // v < 0
+    EXPECT_TRUE(in_shadow(full, one_map(overhead), {4.0, 0.0, 4.0}, 0.0));    // u = v = 1: the last texel
 }

@@ -6,7 +6,6 @@
 #include <memory>
 
 #include "geometry/homogeneous_plane.hpp"
-#include "methods/fallbacks.hpp"
 #include "metrics/measurement.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
@@ -25,7 +24,7 @@ Settings count_rule(const std::string& rule) {
 }
 
 Measurement measure_volumes(const MeasureContext& context, const std::string& rule) {
-    return measure_technique(context, *find_technique("volumes"), count_rule(rule));
+    return measure(context, *find_method("volumes"), count_rule(rule), 0, 0.0);
 }
 
 ShadowVolume volume_of(const Scene& scene, const WorldTriangles& triangles) {
@@ -134,9 +133,9 @@ TEST(ShadowVolumes, WithTheEyeInsideAVolumeZPassIsWrongAndZFailRight) {
     const Measurement zpass = measure_volumes(context, "zpass"), zfail = measure_volumes(context, "zfail");
     EXPECT_GT(zpass.error.misclassified, 0.3);
     EXPECT_LT(zfail.error.misclassified, 1e-3);
-    ASSERT_TRUE(zpass.fallback);
-    EXPECT_EQ(zpass.fallback->rfind(fallback::eye_in_volume, 0), 0u) << *zpass.fallback;
-    EXPECT_FALSE(zfail.fallback) << *zfail.fallback;
+    ASSERT_FALSE(zpass.limits.empty());
+    EXPECT_TRUE(shadowlab::testing::has_note(zpass.limits, NoteKind::eye_in_volume)) << describe(zpass.limits);
+    EXPECT_TRUE(zfail.limits.empty()) << describe(zfail.limits);
 }
 
 TEST(ShadowVolumes, ZFailMatchesTheExactReferenceOnClosedMeshes) {
@@ -145,7 +144,7 @@ TEST(ShadowVolumes, ZFailMatchesTheExactReferenceOnClosedMeshes) {
         const Measurement m = measure_volumes(context, "zfail");
         EXPECT_GT(m.error.receiver_pixels, 640u * 360u / 4) << name;
         EXPECT_LE(m.error.misclassified, 1e-3) << name;
-        EXPECT_FALSE(m.fallback) << name << ": " << *m.fallback;
+        EXPECT_TRUE(m.limits.empty()) << name << ": " << describe(m.limits);
         ASSERT_TRUE(m.geometry);
         EXPECT_GT(m.geometry->polygons, 0u);
         EXPECT_GE(m.geometry->fill_max, m.geometry->fill_mean);
@@ -181,10 +180,10 @@ TEST(ShadowVolumes, OpenAndNonManifoldMeshesAreNamedAndStillShadowRight) {
 
     const MeasureContext context = prepare_measurement(scene, 320, 180);
     const Measurement m = measure_volumes(context, "zfail");
-    ASSERT_TRUE(m.fallback);
-    EXPECT_EQ(m.fallback->rfind(fallback::open_mesh, 0), 0u);
-    EXPECT_NE(m.fallback->find("'sheet' (4 open, 0 non-manifold edges)"), std::string::npos) << *m.fallback;
-    EXPECT_NE(m.fallback->find("'fan'"), std::string::npos) << *m.fallback;
+    ASSERT_FALSE(m.limits.empty());
+    EXPECT_TRUE(shadowlab::testing::has_note(m.limits, NoteKind::open_mesh)) << describe(m.limits);
+    EXPECT_NE(describe(m.limits).find("'sheet' (4 open, 0 non-manifold edges)"), std::string::npos) << describe(m.limits);
+    EXPECT_NE(describe(m.limits).find("'fan'"), std::string::npos) << describe(m.limits);
     EXPECT_LE(m.error.misclassified, 2e-3) << "two-sided volumes shadow the ground right";
     size_t ground_in_shadow = 0;
     for (size_t i = 0; i < context.reference.lit.size(); ++i)
@@ -196,11 +195,11 @@ TEST(ShadowVolumes, TraceListsTheStepsWithTheirGeometryAndChangesNothing) {
     const Scene scene = scene_file("volumes");
     const WorldTriangles triangles = tessellate(scene);
     const ReferenceImage image = exact_reference(scene, triangles, 160, 90);
-    const Technique& volumes = *find_technique("volumes");
+    const Method& volumes = *find_method("volumes");
     const Settings settings = count_rule("zfail");
     Trace trace;
-    const TechniqueResult traced = volumes.compute(scene, triangles, image, settings, &trace);
-    const TechniqueResult plain = volumes.compute(scene, triangles, image, settings, nullptr);
+    const GeometryResult traced = volumes.compute_geometry(scene, triangles, image, settings, &trace);
+    const GeometryResult plain = volumes.compute_geometry(scene, triangles, image, settings, nullptr);
     EXPECT_EQ(traced.shadowed, plain.shadowed);
     for (const char* id : {"volumes.topology", "volumes.light-facing", "volumes.silhouette", "volumes.extrusion",
                            "volumes.caps", "volumes.projection", "volumes.count"})

@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "methods/fallbacks.hpp"
-#include "methods/method.hpp"
+#include <optional>
+
+#include "maps/map_lookup.hpp"
+#include "registry/method.hpp"
 #include "scene/scene.hpp"
 
 namespace shadowlab::testing {
@@ -56,8 +58,31 @@ inline bool in_unit_cube(const glm::dvec3& p, double tolerance) {
            glm::all(glm::lessThanEqual(p, glm::dvec3(1.0 + tolerance)));
 }
 
-// A fallback text starts with one of the names core declares.
-inline bool is_named_fallback(const std::string& text) { return fallback::is_named(text); }
+// Every note is a fallback (not a technique's limit) with particulars.
+inline bool are_fallbacks(const std::vector<Note>& notes) {
+    return std::all_of(notes.begin(), notes.end(), [](const Note& n) {
+        return info(n.kind).category == NoteCategory::fallback && !n.message.empty();
+    });
+}
+
+inline bool has_note(const std::vector<Note>& notes, NoteKind kind) {
+    return std::any_of(notes.begin(), notes.end(), [&](const Note& n) { return n.kind == kind; });
+}
+
+// (u, v, d) of a world point under the map the setup picks for it (any number of maps).
+inline std::optional<glm::dvec3> setup_uvz(const ShadowSetup& setup, const glm::dvec3& p) {
+    const std::optional<MapPoint> at = map_point(setup, p);
+    if (!at) return std::nullopt;
+    return at->uvz();
+}
+
+// The registry's shadow-map methods (the geometric techniques have no maps).
+inline std::vector<const Method*> map_methods() {
+    std::vector<const Method*> out;
+    for (const Method& m : all_methods())
+        if (m.makes_maps()) out.push_back(&m);
+    return out;
+}
 
 }  // namespace shadowlab::testing
 

@@ -4,7 +4,7 @@
 
 #include "geometry/intersection_body.hpp"
 #include "math/matrix.hpp"
-#include "methods/method.hpp"
+#include "registry/method.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 
@@ -16,7 +16,7 @@ namespace {
 ShadowSetup run_tsm(const ShadowInputs& in, const std::map<std::string, std::string>& set = {},
                     Trace* trace = nullptr) {
     const Method& tsm = *find_method("tsm");
-    return tsm.compute(in, resolve_settings("tsm", tsm.settings, set), trace);
+    return tsm.compute_maps(in, resolve_settings("tsm", tsm.settings, set), trace);
 }
 
 // A street-level view over a town, lit from `light_direction`.
@@ -60,7 +60,7 @@ TEST(TsmTrapezoid, CornersMapToTheCornersOfTheUnitSquare) {
     for (const ShadowInputs& in : warped_views()) {
         Trace trace;
         const ShadowSetup setup = run_tsm(in, {}, &trace);
-        ASSERT_FALSE(setup.fallback.has_value()) << *setup.fallback;
+        ASSERT_TRUE(setup.fallbacks.empty()) << describe(setup.fallbacks);
         const glm::dmat4 n_t = value_of<glm::dmat4>(trace, "tsm-trapezoid-to-square", "N_T");
         for (int i = 0; i < 4; ++i) {
             const glm::dvec2 corner = value_of<glm::dvec2>(trace, "tsm-trapezoid", "corner" + std::to_string(i));
@@ -126,7 +126,7 @@ TEST(TsmFocus, ALargerFocusMovesQAwayFromTheTopLine) {
     double previous = 0.0;
     for (const char* focus : {"0.1", "0.3", "0.5", "0.7"}) {
         Trace trace;
-        ASSERT_FALSE(run_tsm(in, {{"focus", focus}}, &trace).fallback.has_value()) << "focus " << focus;
+        ASSERT_TRUE(run_tsm(in, {{"focus", focus}}, &trace).fallbacks.empty()) << "focus " << focus;
         const double eta = value_of<double>(trace, "tsm-focus-80", "eta");
         // q lies on l, η before the top line.
         const glm::dvec2 near_centre = value_of<glm::dvec2>(trace, "tsm-centre-line", "near_centre");
@@ -145,9 +145,9 @@ TEST(TsmFallback, AViewParallelToTheLightHasADegenerateCentreLine) {
     for (const glm::dvec3& view : {glm::normalize(light), -glm::normalize(light)}) {
         const ShadowInputs in = town_view(light, glm::dvec3(0, 3, 150) + view);
         const ShadowSetup setup = run_tsm(in);
-        ASSERT_TRUE(setup.fallback.has_value());
-        EXPECT_EQ(setup.fallback->rfind("degenerate centre line: ", 0), 0u) << *setup.fallback;
-        EXPECT_TRUE(is_named_fallback(*setup.fallback));
+        ASSERT_FALSE(setup.fallbacks.empty());
+        EXPECT_TRUE(has_note(setup.fallbacks, NoteKind::degenerate_centre_line)) << describe(setup.fallbacks);
+        EXPECT_TRUE(are_fallbacks(setup.fallbacks));
         ASSERT_TRUE(finite(setup.maps.at(0).world_to_uvz));
         for (const glm::dvec3& p : body_vertices(in)) EXPECT_TRUE(in_unit_cube(world_to_uvz(setup.maps[0], p), 1e-6));
     }
@@ -158,7 +158,7 @@ TEST(TsmFallback, AFocusRegionReachingPastTheEightyPercentLineAsksForNoWarp) {
     // region of the whole depth would have to land on the 80% line.
     const ShadowInputs in = town_view({0, -1, 0}, {0, 3, 100});
     const ShadowSetup setup = run_tsm(in, {{"focus", "1.0"}});
-    ASSERT_TRUE(setup.fallback.has_value());
-    EXPECT_EQ(setup.fallback->rfind("focus point out of the 80% rule's range: ", 0), 0u) << *setup.fallback;
-    EXPECT_FALSE(run_tsm(in).fallback.has_value());
+    ASSERT_FALSE(setup.fallbacks.empty());
+    EXPECT_TRUE(has_note(setup.fallbacks, NoteKind::focus_out_of_range)) << describe(setup.fallbacks);
+    EXPECT_TRUE(run_tsm(in).fallbacks.empty());
 }

@@ -14,18 +14,25 @@ struct ClipPlane {
     double offset;
 };
 
-// The part of the polygon in one half-space; new points interpolate the homogeneous coordinates.
-inline HomogeneousPolygon clip(const HomogeneousPolygon& polygon, const ClipPlane& plane) {
+// The part of the polygon where distance(i), a value given at each vertex i and interpolated along
+// the edges (as a GPU interpolates gl_ClipDistance), is >= 0; new points interpolate the
+// homogeneous coordinates.
+template <class Distance>
+HomogeneousPolygon clip_where(const HomogeneousPolygon& polygon, Distance&& distance) {
     HomogeneousPolygon out;
     for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const glm::dvec4& a = polygon[i];
-        const glm::dvec4& b = polygon[(i + 1) % polygon.size()];
-        const double da = glm::dot(plane.normal, a) - plane.offset;
-        const double db = glm::dot(plane.normal, b) - plane.offset;
+        const std::size_t j = (i + 1) % polygon.size();
+        const glm::dvec4 &a = polygon[i], &b = polygon[j];
+        const double da = distance(i), db = distance(j);
         if (da >= 0.0) out.push_back(a);
         if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
     }
     return out;
+}
+
+// The part of the polygon in one half-space.
+inline HomogeneousPolygon clip(const HomogeneousPolygon& polygon, const ClipPlane& plane) {
+    return clip_where(polygon, [&](std::size_t i) { return glm::dot(plane.normal, polygon[i]) - plane.offset; });
 }
 
 }  // namespace shadowlab

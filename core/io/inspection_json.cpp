@@ -72,9 +72,36 @@ Json to_json(const Step& step) {
 }
 
 Json to_json(const ShadowMap& map) {
-    return {{"world_to_uvz", to_json(map.world_to_uvz)}, {"viewport", to_json(map.viewport)},
-            {"z_bias_scale", map.z_bias_scale}};
+    Json out = {{"projection", to_string(map.projection)}};
+    if (map.projection == Projection::paraboloid)
+        out["paraboloid"] = {{"centre", to_json(map.paraboloid.centre)},
+                             {"frame_from_world", to_json(glm::dmat4(map.paraboloid.frame_from_world))},
+                             {"near", map.paraboloid.near},
+                             {"far", map.paraboloid.far}};
+    else
+        out["world_to_uvz"] = to_json(map.world_to_uvz);
+    if (map.projection == Projection::cube_face) out["cube_face"] = map.cube_face;
+    out["viewport"] = to_json(map.viewport);
+    out["z_bias_scale"] = map.z_bias_scale;
+    return out;
 }
+
+Json to_json(const MapSelection& s) {
+    Json out = {{"rule", to_string(s.rule)}};
+    if (s.rule == MapSelection::Rule::view_depth)
+        out.update({{"eye", to_json(s.eye)}, {"view_axis", to_json(s.view_axis)}, {"split_depths", s.split_depths}});
+    if (s.rule == MapSelection::Rule::cube_face) out["centre"] = to_json(s.centre);
+    return out;
+}
+
+Json to_json(const std::vector<Note>& notes) {
+    Json out = Json::array();
+    for (const Note& n : notes) out.push_back({{"kind", to_string(n.kind)}, {"message", n.message}});
+    return out;
+}
+
+// The notes as one line ("name: message; ..."), or null for none: the field scripts read first.
+static Json described(const std::vector<Note>& notes) { return notes.empty() ? Json(nullptr) : Json(describe(notes)); }
 
 static Json settings_json(const Settings& settings) {
     Json out = Json::object();
@@ -94,18 +121,20 @@ Json inspection_json(const std::string& method, const Settings& settings, const 
     for (const ShadowMap& m : setup.maps) maps.push_back(to_json(m));
     return {{"method", method},
             {"settings", settings_json(settings)},
-            {"fallback", setup.fallback ? Json(*setup.fallback) : Json(nullptr)},
+            {"fallback", described(setup.fallbacks)},
+            {"fallbacks", to_json(setup.fallbacks)},
             {"inputs", {{"receivers", points_json(inputs.receiver_points())},
                         {"casters", points_json(inputs.caster_points())}}},
             {"maps", maps},
+            {"selection", to_json(setup.selection)},
             {"steps", steps_json(trace)}};
 }
 
-Json technique_inspection_json(const std::string& technique, const Settings& settings, const TechniqueResult& result,
+Json technique_inspection_json(const std::string& technique, const Settings& settings, const GeometryResult& result,
                                const Trace& trace) {
     return {{"method", technique},
             {"settings", settings_json(settings)},
-            {"fallback", result.fallback ? Json(*result.fallback) : Json(nullptr)},
+            {"limits", to_json(result.limits)},
             {"cost", {{"polygons", result.cost.polygons}, {"fill_mean", result.cost.fill_mean},
                       {"fill_max", result.cost.fill_max}}},
             {"steps", steps_json(trace)}};

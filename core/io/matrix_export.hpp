@@ -2,7 +2,7 @@
 // A method's maps as shader source or JSON, for pasting into an engine.
 #include <string>
 
-#include "methods/method.hpp"
+#include "methods/map_method.hpp"
 
 namespace shadowlab {
 

@@ -4,7 +4,6 @@
 #include "methods/focused.hpp"
 
 #include "geometry/intersection_body.hpp"
-#include "methods/fallbacks.hpp"
 #include "methods/map_fit.hpp"
 #include "methods/uniform.hpp"
 
@@ -45,7 +44,7 @@ std::optional<IntersectionBody> body_or_uniform(const ShadowInputs& in, const Se
                                                 ShadowSetup& setup, Trace* trace) {
     IntersectionBody body = focus_body(in, settings, trace);
     if (!body.body.empty()) return body;
-    add_fallback(setup, fallback::named(fallback::empty_body, "the view frustum does not meet the scene; uniform map used"));
+    add_fallback(setup, Note{NoteKind::empty_body, "the view frustum does not meet the scene; uniform map used"});
     fit_uniform(in, setup, trace);
     return std::nullopt;
 }

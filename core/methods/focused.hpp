@@ -2,7 +2,7 @@
 #include <optional>
 
 #include "geometry/intersection_body.hpp"
-#include "methods/method.hpp"
+#include "methods/map_method.hpp"
 
 namespace shadowlab {
 

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "math/matrix.hpp"
-#include "methods/fallbacks.hpp"
 
 namespace shadowlab {
 
@@ -19,8 +18,8 @@ LightBasis light_basis(const glm::dvec3& direction, const glm::dvec3& up_hint, c
     }
     y = glm::normalize(y);
     const glm::dvec3 x = glm::cross(y, z);
-    basis.world_to_light = from_rows({x, -glm::dot(x, origin)}, {y, -glm::dot(y, origin)},
-                                     {z, -glm::dot(z, origin)}, {0, 0, 0, 1});
+    basis.light_from_world = from_rows({x, -glm::dot(x, origin)}, {y, -glm::dot(y, origin)},
+                                       {z, -glm::dot(z, origin)}, {0, 0, 0, 1});
     return basis;
 }
 
@@ -43,22 +42,23 @@ static glm::dvec3 safe_extent(const Aabb& box) {
     return glm::max(box.extent(), glm::dvec3(floor));
 }
 
-glm::dmat4 box_to_unit_cube(const Aabb& b) {
+glm::dmat4 unit_from_box(const Aabb& b) {
     const glm::dvec3 e = safe_extent(b);
     return from_rows({1 / e.x, 0, 0, -b.min.x / e.x}, {0, 1 / e.y, 0, -b.min.y / e.y},
                      {0, 0, 1 / e.z, -b.min.z / e.z}, {0, 0, 0, 1});
 }
 
-ShadowMap orthographic_map(const glm::dmat4& world_to_light, const Aabb& light_box) {
+ShadowMap orthographic_map(const glm::dmat4& light_from_world, const Aabb& ls_box) {
     ShadowMap map;
-    map.world_to_uvz = box_to_unit_cube(light_box) * world_to_light;
-    map.z_bias_scale = 1.0 / safe_extent(light_box).z;
+    map.world_to_uvz = unit_from_box(ls_box) * light_from_world;
+    map.z_bias_scale = 1.0 / safe_extent(ls_box).z;
     return map;
 }
 
-double depth_slope_along(const glm::dmat4& m, const glm::dvec3& direction, const glm::dvec3& at) {
-    const double a = glm::dot(glm::dvec3(row(m, 2)), direction), c = glm::dot(glm::dvec3(row(m, 3)), direction);
-    const glm::dvec4 h = m * glm::dvec4(at, 1.0);
+double depth_slope_along(const glm::dmat4& uvz_from_world, const glm::dvec3& direction, const glm::dvec3& at) {
+    const double a = glm::dot(glm::dvec3(row(uvz_from_world, 2)), direction);  // the depth row's slope along L
+    const double c = glm::dot(glm::dvec3(row(uvz_from_world, 3)), direction);  // the w row's
+    const glm::dvec4 h = uvz_from_world * glm::dvec4(at, 1.0);
     return a - (h.z / h.w) * c;
 }
 
@@ -66,15 +66,15 @@ PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
                                const std::vector<glm::dvec3>& points, double max_half_angle_deg) {
     PerspectiveFit fit;
     const glm::dvec3 up_hint = std::abs(axis.y) < 0.99 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-    fit.world_to_light = light_basis(axis, up_hint, light.position).world_to_light;
+    fit.light_from_world = light_basis(axis, up_hint, light.position).light_from_world;
     const double max_tan = std::tan(glm::radians(max_half_angle_deg));
 
     size_t behind = 0, outside_cone = 0;
-    const std::vector<glm::dvec3> light_points = transformed(points, fit.world_to_light);
+    const std::vector<glm::dvec3> ls_points = transformed(points, fit.light_from_world);
     double far = 0.0;
-    for (const glm::dvec3& p : light_points) far = std::max(far, p.z);
+    for (const glm::dvec3& p : ls_points) far = std::max(far, p.z);
     const double min_near = std::max(far, 1e-9) * 1e-6;  // keeps the depth mapping finite
-    for (const glm::dvec3& p : light_points) {
+    for (const glm::dvec3& p : ls_points) {
         if (p.z <= min_near) { ++behind; continue; }
         glm::dvec2 t = glm::dvec2(p) / p.z;
         if (std::abs(t.x) > max_tan || std::abs(t.y) > max_tan) ++outside_cone;
@@ -83,18 +83,18 @@ PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
     }
     if (fit.light_box.empty()) fit.light_box = {{-max_tan, -max_tan, min_near}, {max_tan, max_tan, 2 * min_near}};
     if (behind > 0)
-        fit.fallback = fallback::named(fallback::behind_light, std::to_string(behind) +
-                                       " left out: one perspective map cannot cover them (an omnidirectional map would)");
+        fit.fallback = Note{NoteKind::behind_light, std::to_string(behind) +
+                                       " left out: one perspective map cannot cover them (an omnidirectional map would)"};
     else if (outside_cone > 0)
-        fit.fallback = fallback::named(fallback::outside_cone, std::to_string(outside_cone) + " clamped to the cone");
+        fit.fallback = Note{NoteKind::outside_cone, std::to_string(outside_cone) + " clamped to the cone"};
 
     const Aabb& b = fit.light_box;
     const glm::dvec3 e = safe_extent(b);
     const double n = b.min.z, f = std::max(b.max.z, n * (1 + 1e-9));
     // u = (x/z - t0) / extent, d = f (z - n) / ((f - n) z): depth grows with distance.
-    const glm::dmat4 light_to_uvz = from_rows({1 / e.x, 0, -b.min.x / e.x, 0}, {0, 1 / e.y, -b.min.y / e.y, 0},
-                                              {0, 0, f / (f - n), -f * n / (f - n)}, {0, 0, 1, 0});
-    fit.map.world_to_uvz = light_to_uvz * fit.world_to_light;
+    const glm::dmat4 uvz_from_light = from_rows({1 / e.x, 0, -b.min.x / e.x, 0}, {0, 1 / e.y, -b.min.y / e.y, 0},
+                                                {0, 0, f / (f - n), -f * n / (f - n)}, {0, 0, 1, 0});
+    fit.map.world_to_uvz = uvz_from_light * fit.light_from_world;
     fit.map.z_bias_scale = f / (f - n);
     return fit;
 }

@@ -7,13 +7,13 @@
 #include <glm/glm.hpp>
 
 #include "geometry/aabb.hpp"
-#include "methods/method.hpp"
+#include "methods/map_method.hpp"
 #include "scene/light.hpp"
 
 namespace shadowlab {
 
 struct LightBasis {
-    glm::dmat4 world_to_light{1.0};  // rotation (and translation to `origin`): light travels along +z
+    glm::dmat4 light_from_world{1.0};  // rotation (and translation to `origin`): light travels along +z
     bool up_was_degenerate = false;  // the up hint was parallel to the light: another axis was used
 };
 
@@ -31,25 +31,26 @@ inline glm::dvec3 stable_up_hint(const glm::dvec3& direction) {
 std::vector<glm::dvec3> transformed(const std::vector<glm::dvec3>& points, const glm::dmat4& m);
 Aabb bounds_of(const std::vector<glm::dvec3>& points);
 
-// The light-space box onto the unit cube; depth = (z - min.z) / (max.z - min.z).
-glm::dmat4 box_to_unit_cube(const Aabb& light_box);
+// A box (in light space, or in PPLS after a warp) onto the map's unit cube (u, v, depth in [0,1]);
+// depth = (z - min.z) / (max.z - min.z).
+glm::dmat4 unit_from_box(const Aabb& box);
 
-// An orthographic map fit to `points` (world) in the given light space.
-ShadowMap orthographic_map(const glm::dmat4& world_to_light, const Aabb& light_box);
+// An orthographic map of the light-space box `ls_box`: world_to_uvz = unit_from_box(ls_box) * light_from_world.
+ShadowMap orthographic_map(const glm::dmat4& light_from_world, const Aabb& ls_box);
 
 // The pre-division depth change per world unit moved along `direction` at the point `at`, the
 // z_bias_scale of a map whose w changes along light rays (exact at `at`, first order elsewhere):
 // d(p + t L) = (d_pre + t a) / (w + t c) ≈ d + t (a - d c) / w, with a, c the rows' slopes along L.
-double depth_slope_along(const glm::dmat4& world_to_uvz, const glm::dvec3& direction, const glm::dvec3& at);
+double depth_slope_along(const glm::dmat4& uvz_from_world, const glm::dvec3& direction, const glm::dvec3& at);
 
 // A perspective map from a spot or point light that covers `points` (world), at most
 // `max_half_angle_deg` off its axis. Named fallbacks: points behind the light, or wider than the
 // allowed cone (the map then covers only the cone).
 struct PerspectiveFit {
     ShadowMap map;
-    glm::dmat4 world_to_light{1.0};  // light view: looks down +z here, like the directional case
-    Aabb light_box;                  // tangent-space x, y and distance z of the covered points
-    std::optional<std::string> fallback;
+    glm::dmat4 light_from_world{1.0};  // light view: looks down +z here, like the directional case
+    Aabb light_box;                    // tangent-space x, y and distance z of the covered points
+    std::optional<Note> fallback;
 };
 PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
                                const std::vector<glm::dvec3>& points, double max_half_angle_deg);

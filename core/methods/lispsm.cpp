@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "math/matrix.hpp"
-#include "methods/fallbacks.hpp"
 #include "methods/focused.hpp"
 #include "methods/light_fit.hpp"
 #include "methods/map_fit.hpp"
@@ -25,12 +24,15 @@ namespace {
 // A warp weaker than this (n this many times the body's depth: under 0.01% of distortion) is none.
 constexpr double kNoWarp = 1e4;
 
-// The perspective along +y from `centre`: x' = x/y, z' = z/y, y' = f (y - n) / ((f - n) y), all
-// relative to the centre; light rays (along z) keep their x', y'.
-glm::dmat4 warp_matrix(const glm::dvec3& centre, double n, double f) {
-    const glm::dmat4 to_centre = from_rows({1, 0, 0, -centre.x}, {0, 1, 0, -centre.y}, {0, 0, 1, -centre.z}, {0, 0, 0, 1});
-    const glm::dmat4 perspective = from_rows({1, 0, 0, 0}, {0, f / (f - n), 0, -f * n / (f - n)}, {0, 0, 1, 0}, {0, 1, 0, 0});
-    return perspective * to_centre;
+// LiSPSM's warp P, light space -> PPLS: the perspective along +y from `ls_centre`: x' = x/y,
+// z' = z/y, y' = f (y - n) / ((f - n) y), all relative to the centre; light rays (along z) keep
+// their x', y'.
+glm::dmat4 warp_matrix(const glm::dvec3& ls_centre, double n, double f) {
+    const glm::dmat4 centred_from_light =
+        from_rows({1, 0, 0, -ls_centre.x}, {0, 1, 0, -ls_centre.y}, {0, 0, 1, -ls_centre.z}, {0, 0, 0, 1});
+    const glm::dmat4 ppls_from_centred =
+        from_rows({1, 0, 0, 0}, {0, f / (f - n), 0, -f * n / (f - n)}, {0, 0, 1, 0}, {0, 1, 0, 0});
+    return ppls_from_centred * centred_from_light;
 }
 
 }  // namespace
@@ -40,24 +42,24 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
     const auto body = start_warp("lispsm", in, s, setup, trace);
     if (!body) return setup;
 
-    // Light space with y along the view direction made perpendicular to the light.
-    const glm::dvec3 view = in.camera.view_direction();
-    const double sin_gamma = glm::length(glm::cross(view, in.light.direction));
-    const LightBasis basis = light_basis(in.light.direction, view);
-    const std::vector<glm::dvec3> light_body = transformed(body->body.vertices, basis.world_to_light);
-    const Aabb body_box = bounds_of(light_body);
-    // n_opt from the eye's near plane and the body's depth seen along the view (Wimmer's z_f).
+    // LiSPSM: light space with y along the view direction made perpendicular to the light.
+    const glm::dvec3 view_dir = in.camera.view_direction();
+    const double sin_gamma = glm::length(glm::cross(view_dir, in.light.direction));
+    const glm::dmat4 light_from_world = light_basis(in.light.direction, view_dir).light_from_world;
+    const std::vector<glm::dvec3> ls_body = transformed(body->body.vertices, light_from_world);
+    const Aabb ls_body_box = bounds_of(ls_body);
+    // LiSPSM: n_opt from the eye's near plane and the body's depth seen along the view (Wimmer's z_f).
     const double z_n = in.camera.near;
-    const double depth = body_box.extent().y;
+    const double depth = ls_body_box.extent().y;
     const double z_f = z_n + depth * sin_gamma;
     const double eta = s.number("eta");
     const double n = s.number("n") > 0.0 ? s.number("n") : lispsm_n(z_n, z_f, sin_gamma, eta);
     record(trace, [&](Trace& t) {
         t.add("light-space", "Light space", "z = light direction, y = view direction made perpendicular to it",
               Space::light)
-            .value("world_to_light", basis.world_to_light)
-            .shape("B", PointSet{light_body}).shape("B box", body_box);
-        t.set_frame(Space::light, basis.world_to_light);
+            .value("world_to_light", light_from_world)
+            .shape("B", PointSet{ls_body}).shape("B box", ls_body_box);
+        t.set_frame(Space::light, light_from_world);
         t.add("gamma", "Angle γ", "sin γ = |view × light|: 1 when the light is perpendicular to the view",
               Space::light)
             .value("sin_gamma", sin_gamma).value("gamma_deg", glm::degrees(std::asin(std::min(1.0, sin_gamma))));
@@ -68,37 +70,45 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
     });
     if (!(n < kNoWarp * depth)) {  // also catches n = ∞ and NaN at γ = 0
         if (eta > -1.0 && s.number("n") <= 0.0)
-            add_fallback(setup, fallback::named(fallback::parallel_light,
+            add_fallback(setup, Note{NoteKind::parallel_light,
                                                 "sin γ = " + std::to_string(sin_gamma) +
-                                                    ": the warp has faded to nothing; focused map used"));
+                                                    ": the warp has faded to nothing; focused map used"});
         fit_focused(in, *body, setup, trace);
         return setup;
     }
 
-    // The warp frustum: centre n before the body's near face, at the eye's x and z.
-    const glm::dvec3 eye = transform_point(basis.world_to_light, in.camera.position);
-    const glm::dvec3 centre{eye.x, body_box.min.y - n, eye.z};
-    const glm::dmat4 warp = warp_matrix(centre, n, n + depth);
-    const ProjectedPoints warped = project(body->body.vertices, warp * basis.world_to_light, 0.0);
-    const Aabb warped_box = bounds_of(warped.points);
+    // LiSPSM: the warp frustum, centre n before the body's near face, at the eye's x and z.
+    const glm::dvec3 ls_eye = transform_point(light_from_world, in.camera.position);
+    const glm::dvec3 ls_centre{ls_eye.x, ls_body_box.min.y - n, ls_eye.z};
+    const glm::dmat4 ppls_from_light = warp_matrix(ls_centre, n, n + depth);
+    const ProjectedPoints ppls_body = project(body->body.vertices, ppls_from_light * light_from_world, 0.0);
+    const Aabb ppls_box = bounds_of(ppls_body.points);
+    // LiSPSM: the map is an orthographic fit in the warped space (PPLS).
+    const glm::dmat4 uvz_from_ppls = unit_from_box(ppls_box);
     ShadowMap map;
-    map.world_to_uvz = box_to_unit_cube(warped_box) * warp * basis.world_to_light;
-    map.z_bias_scale = 1.0 / warped_box.extent().z;
+    map.world_to_uvz = uvz_from_ppls * ppls_from_light * light_from_world;
+    map.z_bias_scale = 1.0 / ppls_box.extent().z;
     setup.maps.push_back(map);
     record(trace, [&](Trace& t) {
         t.add("warp-frustum", "Warp frustum", "centre C = (eye x, near face of B - n, eye z), near n, far n + depth(B)",
               Space::light)
-            .value("C", centre).value("near", n).value("far", n + depth)
-            .shape("C", PointSet{{centre}});
+            .value("C", ls_centre).value("near", n).value("far", n + depth)
+            .shape("C", PointSet{{ls_centre}});
         t.add("warp", "Perspective warp P", "x' = x/y, y' = f(y - n)/((f - n) y), z' = z/y about C", Space::ppls)
-            .value("P", warp)
-            .shape("warped B", PointSet{warped.points}).shape("warped box", warped_box);
-        t.set_frame(Space::ppls, warp * basis.world_to_light);
+            .value("P", ppls_from_light)
+            .shape("warped B", PointSet{ppls_body.points}).shape("warped box", ppls_box);
+        t.set_frame(Space::ppls, ppls_from_light * light_from_world);
         t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min) over the warped body", Space::unit)
-            .value("warped_to_unit", box_to_unit_cube(warped_box));
+            .value("warped_to_unit", uvz_from_ppls);
     });
     record_output(setup, body->body.vertices, trace);
     return setup;
+}
+
+std::vector<SettingSpec> lispsm_settings() {
+    return {{"eta", "Lloyd's η: -1 uniform, 0 LiSPSM's n_opt, 1 PSM-like", "0", -1.0, 1.0, {}},
+            {"n", "warp near distance; 0 = automatic (n_opt)", "0", 0.0, 1e12, {}},
+            body_kernel_setting()};
 }
 
 }  // namespace shadowlab

@@ -1,9 +1,12 @@
 #pragma once
-#include "methods/method.hpp"
+#include "methods/map_method.hpp"
 
 namespace shadowlab {
 
 ShadowSetup compute_lispsm(const ShadowInputs& inputs, const Settings& settings, Trace* trace);
+// lispsm's settings, with their ranges and defaults.
+std::vector<SettingSpec> lispsm_settings();
+
 
 // The warp frustum's near distance n for the eye range [z_n, z_f] and angle γ between view and
 // light, with Lloyd's η: the warp's far/near ratio is (z_f / z_n)^((1 + η) / 2), so η = -1 gives

@@ -6,29 +6,27 @@
 
 namespace shadowlab {
 
-void add_fallback(ShadowSetup& setup, const std::string& what) {
-    setup.fallback = setup.fallback ? *setup.fallback + "; " + what : what;
-}
+void add_fallback(ShadowSetup& setup, Note fallback) { setup.fallbacks.push_back(std::move(fallback)); }
 
 static void fit_orthographic(const ShadowInputs& in, const MapFitRequest& req, ShadowSetup& setup, Trace* trace) {
     const LightBasis basis = light_basis(in.light.direction, req.up_hint);
-    const std::vector<glm::dvec3> light_points = transformed(*req.points, basis.world_to_light);
-    const Aabb light_box = bounds_of(light_points);
-    setup.maps.push_back(orthographic_map(basis.world_to_light, light_box));
+    const std::vector<glm::dvec3> ls_points = transformed(*req.points, basis.light_from_world);
+    const Aabb ls_box = bounds_of(ls_points);
+    setup.maps.push_back(orthographic_map(basis.light_from_world, ls_box));
     record(trace, [&](Trace& t) {
         t.add("light-space", "Light space", "rows x, y, z: z = light direction, y = up hint made perpendicular",
               Space::light)
-            .value("world_to_light", basis.world_to_light)
+            .value("world_to_light", basis.light_from_world)
             .value("up_hint", req.up_hint)
             .value("up_hint_parallel_to_light", basis.up_was_degenerate ? 1.0 : 0.0)
-            .shape("points", PointSet{light_points});
+            .shape("points", PointSet{ls_points});
         t.add("light-box", "Light-space fit", "AABB of the points in light space: the orthographic projection",
               Space::light)
-            .value("min", light_box.min).value("max", light_box.max)
-            .shape("fit", light_box);
+            .value("min", ls_box.min).value("max", ls_box.max)
+            .shape("fit", ls_box);
         t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min): the light box onto [0,1]^3", Space::unit)
-            .value("light_to_unit", box_to_unit_cube(light_box));
-        t.set_frame(Space::light, basis.world_to_light);
+            .value("light_to_unit", unit_from_box(ls_box));
+        t.set_frame(Space::light, basis.light_from_world);
     });
 }
 
@@ -42,14 +40,14 @@ static void fit_perspective(const ShadowInputs& in, const MapFitRequest& req, Sh
     if (fit.fallback) add_fallback(setup, *fit.fallback);
     record(trace, [&](Trace& t) {
         t.add("light-space", "Light view", "origin at the light, z along its axis", Space::light)
-            .value("world_to_light", fit.world_to_light)
+            .value("world_to_light", fit.light_from_world)
             .value("max_half_angle_deg", max_half_angle)
-            .shape("points", PointSet{transformed(*req.points, fit.world_to_light)});
+            .shape("points", PointSet{transformed(*req.points, fit.light_from_world)});
         t.add("light-frustum", "Light frustum fit",
               "tangent bounds (x/z, y/z) and distance range of the points, clamped to the cone", Space::light)
             .value("tan_min", glm::dvec2(fit.light_box.min)).value("tan_max", glm::dvec2(fit.light_box.max))
             .value("near", fit.light_box.min.z).value("far", fit.light_box.max.z);
-        t.set_frame(Space::light, fit.world_to_light);
+        t.set_frame(Space::light, fit.light_from_world);
         t.set_frame(Space::ppls, fit.map.world_to_uvz);  // a point light's own post-perspective space
     });
 }
@@ -65,15 +63,15 @@ void record_output(const ShadowSetup& setup, const std::vector<glm::dvec3>& cove
     record(trace, [&](Trace& t) {
         for (size_t i = 0; i < setup.maps.size(); ++i) {
             const ShadowMap& map = setup.maps[i];
-            PointSet unit_points;
-            for (const glm::dvec3& p : covered) unit_points.points.push_back(world_to_uvz(map, p));
+            PointSet uvz_points;
+            for (const glm::dvec3& p : covered) uvz_points.points.push_back(world_to_uvz(map, p));
             const std::string suffix = setup.maps.size() > 1 ? "-" + std::to_string(i) : "";
             t.add("output" + suffix, "Map transform", "world (x,y,z,1) -> (u,v,d,w); u,v,d in [0,1] after / w",
                   Space::unit)
                 .value("world_to_uvz", map.world_to_uvz)
                 .value("z_bias_scale", map.z_bias_scale)
                 .shape("unit_cube", Aabb{glm::dvec3(0.0), glm::dvec3(1.0)})
-                .shape("covered_points", std::move(unit_points));
+                .shape("covered_points", std::move(uvz_points));
         }
         if (!setup.maps.empty()) t.set_frame(Space::unit, setup.maps.front().world_to_uvz);
     });

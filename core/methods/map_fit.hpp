@@ -4,7 +4,7 @@
 #include <vector>
 #include <glm/glm.hpp>
 
-#include "methods/method.hpp"
+#include "methods/map_method.hpp"
 
 namespace shadowlab {
 
@@ -20,7 +20,7 @@ void fit_map(const ShadowInputs& inputs, const MapFitRequest& request, ShadowSet
 // Records the final step: each map's matrix and bias scale, and the covered points in unit space.
 void record_output(const ShadowSetup& setup, const std::vector<glm::dvec3>& covered, Trace* trace);
 
-// Adds a named fallback to the setup ("; " between several).
-void add_fallback(ShadowSetup& setup, const std::string& what);
+// Adds a named fallback to the setup.
+void add_fallback(ShadowSetup& setup, Note fallback);
 
 }  // namespace shadowlab

@@ -12,9 +12,9 @@
 #include <string>
 
 #include "math/matrix.hpp"
-#include "methods/fallbacks.hpp"
 #include "methods/light_fit.hpp"
 #include "methods/map_fit.hpp"
+#include "methods/focused.hpp"
 #include "methods/warp_common.hpp"
 
 namespace shadowlab {
@@ -38,30 +38,31 @@ std::vector<glm::dvec3> in_xy_plane(const std::vector<glm::dvec2>& points) {
 }
 
 struct LightView {
-    glm::dmat4 world_to_light;
+    glm::dmat4 light_from_world;
     std::vector<glm::dvec3> body;    // B in light space
-    std::vector<glm::dvec2> points;  // B projected to the xy plane
+    std::vector<glm::dvec2> points;  // B projected to the light-space xy plane
 };
 
 // TSM: the eye frustum in the light's post-perspective space, projected to its xy plane.
 LightView light_view(const ShadowInputs& in, const IntersectionBody& body, Trace* trace) {
-    LightView v;
-    v.world_to_light = light_basis(in.light.direction, in.camera.view_direction(), in.camera.position).world_to_light;
-    v.body = transformed(body.body.vertices, v.world_to_light);
-    for (const glm::dvec3& p : v.body) v.points.emplace_back(p);
+    LightView ls;
+    ls.light_from_world =
+        light_basis(in.light.direction, in.camera.view_direction(), in.camera.position).light_from_world;
+    ls.body = transformed(body.body.vertices, ls.light_from_world);
+    for (const glm::dvec3& p : ls.body) ls.points.emplace_back(p);
     record(trace, [&](Trace& t) {
         t.add("tsm-light-space", "Light's post-perspective space",
               "directional light: light space with an orthographic fit (z along the light, y the view made "
               "perpendicular to it, origin at the eye); where the paper projects the eye frustum's 8 corners, we "
               "project the vertices of the eye frustum focused to the body B",
               Space::light)
-            .value("world_to_light", v.world_to_light)
+            .value("world_to_light", ls.light_from_world)
             .value("eye_xy", glm::dvec2(0.0))
-            .value("view_xy", glm::dvec2(glm::dmat3(v.world_to_light) * in.camera.view_direction()))
-            .shape("B", PointSet{v.body}).shape("B projected", PointSet{in_xy_plane(v.points)});
-        t.set_frame(Space::light, v.world_to_light);
+            .value("view_xy", glm::dvec2(glm::dmat3(ls.light_from_world) * in.camera.view_direction()))
+            .shape("B", PointSet{ls.body}).shape("B projected", PointSet{in_xy_plane(ls.points)});
+        t.set_frame(Space::light, ls.light_from_world);
     });
-    return v;
+    return ls;
 }
 
 // The centre line l in light-space xy; positions along it are measured from the near centre.
@@ -74,19 +75,19 @@ struct CentreLine {
 
 // TSM: the centre line, from the near plane's centre to the far plane's centre, for the eye frustum
 // focused to the visible region V (its near and far planes moved to touch V).
-CentreLine centre_line(const Camera& camera, const IntersectionBody& body, const LightView& v, Trace* trace) {
-    const glm::dvec3 view = camera.view_direction();
+CentreLine centre_line(const Camera& camera, const IntersectionBody& body, const LightView& ls, Trace* trace) {
+    const glm::dvec3 view_dir = camera.view_direction();
     double near = INFINITY, far = -INFINITY;
     for (const glm::dvec3& p : body.visible.vertices) {
-        near = std::min(near, glm::dot(p - camera.position, view));
-        far = std::max(far, glm::dot(p - camera.position, view));
+        near = std::min(near, glm::dot(p - camera.position, view_dir));
+        far = std::max(far, glm::dot(p - camera.position, view_dir));
     }
     CentreLine l;
-    l.near_centre = glm::dvec2(transform_point(v.world_to_light, camera.position + near * view));
-    l.far_centre = glm::dvec2(transform_point(v.world_to_light, camera.position + far * view));
+    l.near_centre = glm::dvec2(transform_point(ls.light_from_world, camera.position + near * view_dir));
+    l.far_centre = glm::dvec2(transform_point(ls.light_from_world, camera.position + far * view_dir));
     l.length = glm::length(l.far_centre - l.near_centre);
     l.axis = l.length > 0.0 ? (l.far_centre - l.near_centre) / l.length : glm::dvec2(0.0);
-    l.extent = glm::length(glm::dvec2(bounds_of(v.body).extent()));
+    l.extent = glm::length(glm::dvec2(bounds_of(ls.body).extent()));
     record(trace, [&](Trace& t) {
         t.add("tsm-centre-line", "Centre line l",
               "from the near plane's centre to the far plane's centre, projected; near and far moved to touch V; "
@@ -227,33 +228,34 @@ Trapezoid trapezoid_around(const std::vector<glm::dvec2>& hull, const CentreLine
 }
 
 // The depth row k (z - z_min), with k fitting the body's largest (z - z_min) / w to 1.
-glm::dvec4 depth_row(const glm::dvec4& w, const std::vector<glm::dvec3>& light_body) {
+glm::dvec4 depth_row(const glm::dvec4& w, const std::vector<glm::dvec3>& ls_body) {
     double z_min = INFINITY, largest = 0.0;
-    for (const glm::dvec3& p : light_body) z_min = std::min(z_min, p.z);
-    for (const glm::dvec3& p : light_body) largest = std::max(largest, (p.z - z_min) / glm::dot(w, glm::dvec4(p, 1.0)));
+    for (const glm::dvec3& p : ls_body) z_min = std::min(z_min, p.z);
+    for (const glm::dvec3& p : ls_body) largest = std::max(largest, (p.z - z_min) / glm::dot(w, glm::dvec4(p, 1.0)));
     return {0.0, 0.0, 1.0 / largest, -z_min / largest};
 }
 
 // TSM: N_T, the trapezoid onto the unit square, in one projective step where the paper chains
 // T1 R T2 H S1 N T3 S2: w = a, the distance from q along l; u w = (s - m_r a) / (m_l - m_r), s
-// across l, m_l and m_r the side lines' slopes; v w = (η + λ)(a - η) / λ.
-glm::dmat4 trapezoid_to_square(const Trapezoid& z, const std::vector<glm::dvec3>& light_body, Trace* trace) {
+// across l, m_l and m_r the side lines' slopes; v w = (η + λ)(a - η) / λ. Light space -> the map's unit cube.
+glm::dmat4 trapezoid_to_square(const Trapezoid& z, const std::vector<glm::dvec3>& ls_body, Trace* trace) {
     const glm::dvec4 a{z.axis.x, z.axis.y, 0.0, -glm::dot(z.axis, z.q)};
     const glm::dvec4 s{-z.axis.y, z.axis.x, 0.0, -cross(z.axis, z.q)};
     const glm::dvec4 u = (s - z.right_slope * a) / (z.left_slope - z.right_slope);
     const glm::dvec4 v = (a - glm::dvec4(0.0, 0.0, 0.0, z.eta)) * ((z.eta + z.lambda) / z.lambda);
-    const glm::dmat4 n_t = from_rows(u, v, depth_row(a, light_body), a);
+    const glm::dmat4 unit_from_light = from_rows(u, v, depth_row(a, ls_body), a);  // N_T
     record(trace, [&](Trace& t) {
         Step& step = t.add("tsm-trapezoid-to-square", "Trapezoid to square N_T",
                            "w = distance from q along l; u, v: the trapezoid onto [0,1]^2 (top line v = 0); light "
                            "rays keep (x, y) and so w: depth k (z - z_min) / w grows along each, k fitting B to [0,1]; "
                            "the paper writes z_L w per vertex instead, which one matrix cannot",
                            Space::unit)
-                         .value("N_T", n_t);
+                         .value("N_T", unit_from_light);
         for (size_t i = 0; i < z.corners.size(); ++i)
-            step.value("corner" + std::to_string(i) + "_uv", glm::dvec2(transform_point(n_t, {z.corners[i], 0.0})));
+            step.value("corner" + std::to_string(i) + "_uv",
+                       glm::dvec2(transform_point(unit_from_light, {z.corners[i], 0.0})));
     });
-    return n_t;
+    return unit_from_light;
 }
 
 }  // namespace
@@ -263,34 +265,41 @@ ShadowSetup compute_tsm(const ShadowInputs& in, const Settings& s, Trace* trace)
     const auto body = start_warp("tsm", in, s, setup, trace);
     if (!body) return setup;
 
-    const LightView light = light_view(in, *body, trace);
-    const CentreLine l = centre_line(in.camera, *body, light, trace);
+    const LightView ls = light_view(in, *body, trace);
+    const CentreLine l = centre_line(in.camera, *body, ls, trace);
     if (l.degenerate()) {
-        fall_back_to_focused(fallback::named(fallback::degenerate_centre_line,
+        fall_back_to_focused(Note{NoteKind::degenerate_centre_line,
                                              "|l| / points' extent = " + std::to_string(l.length / l.extent) +
                                                  " < 0.05, the light is almost parallel to the view; focused map "
-                                                 "used"),
+                                                 "used"},
                              in, *body, setup, trace);
         return setup;
     }
-    const std::vector<glm::dvec2> hull = convex_hull(light.points, trace);
+    const std::vector<glm::dvec2> hull = convex_hull(ls.points, trace);
     const TopBase lines = top_and_base(hull, l, trace);
     const Focus focus = focus_80(l, lines, s.number("focus"), trace);
     if (!(focus.eta > 0.0 && focus.eta < kNoWarp * lines.lambda())) {
-        fall_back_to_focused(fallback::named(fallback::focus_out_of_range, out_of_range(focus, lines)), in, *body,
+        fall_back_to_focused(Note{NoteKind::focus_out_of_range, out_of_range(focus, lines)}, in, *body,
                              setup, trace);
         return setup;
     }
     const Trapezoid trapezoid = trapezoid_around(hull, l, lines, focus, trace);
-    const glm::dmat4 n_t = trapezoid_to_square(trapezoid, light.body, trace);
+    const glm::dmat4 unit_from_light = trapezoid_to_square(trapezoid, ls.body, trace);  // N_T
 
     ShadowMap map;
-    map.world_to_uvz = n_t * light.world_to_light;
-    record(trace, [&](Trace& t) { t.set_frame(Space::ppls, n_t * light.world_to_light); });  // the trapezoid's warp
-    map.z_bias_scale = row(n_t, 2).z;  // depth per world unit along the light, before division by w
+    map.world_to_uvz = unit_from_light * ls.light_from_world;
+    // The trapezoid's warp: TSM's post-perspective space is the map's unit cube itself.
+    record(trace, [&](Trace& t) { t.set_frame(Space::ppls, unit_from_light * ls.light_from_world); });
+    map.z_bias_scale = row(unit_from_light, 2).z;  // depth per world unit along the light, before division by w
     setup.maps.push_back(map);
     record_output(setup, body->body.vertices, trace);
     return setup;
+}
+
+std::vector<SettingSpec> tsm_settings() {
+    return {{"focus", "80% rule: the focus region, this fraction of the view's depth, ends on the map's 80% line", "0.5",
+             0.05, 1.0, {}},
+            body_kernel_setting()};
 }
 
 }  // namespace shadowlab

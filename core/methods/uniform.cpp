@@ -4,7 +4,6 @@
 
 #include <cmath>
 
-#include "methods/fallbacks.hpp"
 #include "methods/light_fit.hpp"
 #include "methods/map_fit.hpp"
 
@@ -12,18 +11,18 @@ namespace shadowlab {
 
 void fit_uniform(const ShadowInputs& in, ShadowSetup& setup, Trace* trace) {
     if (in.scene_bounds.empty()) {
-        add_fallback(setup, fallback::named(fallback::empty_scene, "no object to fit a map to; identity map"));
+        add_fallback(setup, Note{NoteKind::empty_scene, "no object to fit a map to; identity map"});
         setup.maps.push_back(ShadowMap{});
         return;
     }
     const auto c = in.scene_bounds.corners();
-    const std::vector<glm::dvec3> corners(c.begin(), c.end());
+    const std::vector<glm::dvec3> ws_corners(c.begin(), c.end());
     record(trace, [&](Trace& t) {
         t.add("scene-bounds", "Scene bounds", "S = union of every object's world box", Space::world)
             .shape("S", in.scene_bounds);
     });
-    fit_map(in, {&corners, stable_up_hint(in.light.direction), in.scene_bounds.center()}, setup, trace);
-    record_output(setup, corners, trace);
+    fit_map(in, {&ws_corners, stable_up_hint(in.light.direction), in.scene_bounds.center()}, setup, trace);
+    record_output(setup, ws_corners, trace);
 }
 
 ShadowSetup compute_uniform(const ShadowInputs& in, const Settings&, Trace* trace) {

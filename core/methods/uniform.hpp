@@ -1,5 +1,5 @@
 #pragma once
-#include "methods/method.hpp"
+#include "methods/map_method.hpp"
 
 namespace shadowlab {
 

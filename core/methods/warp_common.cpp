@@ -1,6 +1,5 @@
 #include "methods/warp_common.hpp"
 
-#include "methods/fallbacks.hpp"
 #include "methods/focused.hpp"
 #include "methods/map_fit.hpp"
 
@@ -10,18 +9,18 @@ std::optional<IntersectionBody> start_warp(const std::string& method, const Shad
                                            const Settings& settings, ShadowSetup& setup, Trace* trace) {
     auto body = body_or_uniform(in, settings, setup, trace);
     if (body && !in.light.is_directional()) {
-        fall_back_to_focused(fallback::named(fallback::not_directional,
+        fall_back_to_focused(Note{NoteKind::not_directional,
                                              method + " warps directional lights only; focused map used for this " +
-                                                 to_string(in.light.type) + " light"),
+                                                 to_string(in.light.type) + " light"},
                              in, *body, setup, trace);
         return std::nullopt;
     }
     return body;
 }
 
-void fall_back_to_focused(const std::string& reason, const ShadowInputs& in, const IntersectionBody& body,
+void fall_back_to_focused(Note reason, const ShadowInputs& in, const IntersectionBody& body,
                           ShadowSetup& setup, Trace* trace) {
-    add_fallback(setup, reason);
+    add_fallback(setup, std::move(reason));
     fit_focused(in, body, setup, trace);
 }
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "geometry/intersection_body.hpp"
-#include "methods/method.hpp"
+#include "methods/map_method.hpp"
 
 namespace shadowlab {
 
@@ -16,7 +16,7 @@ std::optional<IntersectionBody> start_warp(const std::string& method, const Shad
                                            const Settings& settings, ShadowSetup& setup, Trace* trace);
 
 // Names the fallback and fits the focused map to the body.
-void fall_back_to_focused(const std::string& reason, const ShadowInputs& inputs, const IntersectionBody& body,
+void fall_back_to_focused(Note reason, const ShadowInputs& inputs, const IntersectionBody& body,
                           ShadowSetup& setup, Trace* trace);
 
 // Corners of each box cut to `region` (boxes that miss it give none).

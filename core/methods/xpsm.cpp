@@ -9,17 +9,17 @@
 
 #include "geometry/convex_polyhedron.hpp"
 #include "math/matrix.hpp"
-#include "methods/fallbacks.hpp"
 #include "methods/light_fit.hpp"
 #include "methods/map_fit.hpp"
+#include "methods/focused.hpp"
 #include "methods/warp_common.hpp"
 
 namespace shadowlab {
 namespace {
 
-double min_projection(const std::vector<glm::dvec3>& light_points, const glm::dvec2& unit_p) {
+double min_projection(const std::vector<glm::dvec3>& ls_points, const glm::dvec2& unit_p) {
     double m = INFINITY;
-    for (const glm::dvec3& p : light_points) m = std::min(m, p.x * unit_p.x + p.y * unit_p.y);
+    for (const glm::dvec3& p : ls_points) m = std::min(m, p.x * unit_p.x + p.y * unit_p.y);
     return m;
 }
 
@@ -30,11 +30,11 @@ struct Warp {
 };
 
 // Steps 4 to 7: the projection vector's length, clipped away from the singularity at w = 0.
-Warp projection_vector(const glm::dvec2& unit_p, double cos_gamma, const std::vector<glm::dvec3>& light_casters,
-                       const std::vector<glm::dvec3>& light_receivers, const Settings& s, Trace* trace) {
+Warp projection_vector(const glm::dvec2& unit_p, double cos_gamma, const std::vector<glm::dvec3>& ls_casters,
+                       const std::vector<glm::dvec3>& ls_receivers, const Settings& s, Trace* trace) {
     const double coef = s.number("coef"), epsilon_w = s.number("epsilonW");
-    const double min_casters = min_projection(light_casters, unit_p);      // step 4
-    const double min_receivers = min_projection(light_receivers, unit_p);  // step 4
+    const double min_casters = min_projection(ls_casters, unit_p);      // step 4
+    const double min_receivers = min_projection(ls_receivers, unit_p);  // step 4
     const double max_length_p = (epsilon_w - 1.0) / std::max(min_casters, min_receivers);  // step 5
     const double optimal = coef / cos_gamma;                                                // step 6
     const bool clipped = max_length_p > 0.0 && optimal > max_length_p;                     // step 7
@@ -54,29 +54,29 @@ Warp projection_vector(const glm::dvec2& unit_p, double cos_gamma, const std::ve
     return warp;
 }
 
-// Steps 8 to 10: light space -> PPLS.
+// Steps 8 to 10: PPLS Transform, light space -> PPLS.
 glm::dmat4 ppls_transform(const Warp& w, Trace* trace) {
     const glm::dvec2 p = w.unit_p;
     const glm::dmat4 projection = from_rows({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0},
                                             {p.x * w.length_p, p.y * w.length_p, 0, 1});
     const glm::dmat4 z_rotation = from_rows({p.x, p.y, 0, 0}, {p.y, -p.x, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1});
-    const glm::dmat4 ppls = z_rotation * projection;  // row-vector "Projection * ZRotation"
+    const glm::dmat4 ppls_from_light = z_rotation * projection;  // row-vector "Projection * ZRotation"
     record(trace, [&](Trace& t) {
         t.add("xpsm-8", "Projection", "w = 1 + lengthP (unitP · xy): the projection vector as the w row",
               Space::light).value("Projection", projection);
         t.add("xpsm-9", "ZRotation", "rotation about z taking unitP onto the x axis", Space::light)
             .value("ZRotation", z_rotation);
         t.add("xpsm-10", "PPLS Transform", "Projection * ZRotation (row vectors): light space -> PPLS",
-              Space::ppls).value("PPLS_Transform", ppls);
+              Space::ppls).value("PPLS_Transform", ppls_from_light);
     });
-    return ppls;
+    return ppls_from_light;
 }
 
 // Where the focus interval starts (seed 3.3: below max(minCastersProj, minReceiversProj) on unitP
 // no receiver has a caster above it, nor a caster a receiver below it), as a world plane whose
 // kept side is p.xy · unitP >= minFocusRegionProj; there w >= εW.
-Plane focus_start(const glm::dmat4& light_space, const Warp& warp) {
-    const glm::dvec4 along = warp.unit_p.x * row(light_space, 0) + warp.unit_p.y * row(light_space, 1);
+Plane focus_start(const glm::dmat4& light_from_world, const Warp& warp) {
+    const glm::dvec4 along = warp.unit_p.x * row(light_from_world, 0) + warp.unit_p.y * row(light_from_world, 1);
     const double length = glm::length(glm::dvec3(along));
     return {-glm::dvec3(along) / length, (warp.min_focus_proj - along.w) / length};
 }
@@ -87,17 +87,17 @@ double tolerance_for(const Aabb& box) { return 1e-12 * (1.0 + box.diagonal()); }
 // focus interval starts and what stays is projected. Leaving out single corners instead (w < εW)
 // would shrink a box that crosses that line to its far corners, and the focus region could miss
 // receivers a caster shadows.
-ProjectedPoints project_boxes(const std::vector<glm::dvec3>& corners, const Plane& start, const glm::dmat4& to_ppls,
-                              double min_w) {
+ProjectedPoints project_boxes(const std::vector<glm::dvec3>& ws_corners, const Plane& start,
+                              const glm::dmat4& ppls_from_world, double min_w) {
     ProjectedPoints out;
-    out.points.reserve(corners.size());
+    out.points.reserve(ws_corners.size());
     auto add = [&](const glm::dvec3& p, bool keep) {
-        const glm::dvec4 h = to_ppls * glm::dvec4(p, 1.0);
+        const glm::dvec4 h = ppls_from_world * glm::dvec4(p, 1.0);
         if (h.w < min_w) ++out.left_out;  // counted for the trace, as the seed leaves such points out
         else if (keep) out.points.push_back(glm::dvec3(h) / h.w);
     };
-    for (size_t i = 0; i + 8 <= corners.size(); i += 8) {
-        const glm::dvec3* box = &corners[i];
+    for (size_t i = 0; i + 8 <= ws_corners.size(); i += 8) {
+        const glm::dvec3* box = &ws_corners[i];
         double lo = INFINITY, hi = -INFINITY;
         for (int k = 0; k < 8; ++k) lo = std::min(lo, start.signed_distance(box[k])), hi = std::max(hi, start.signed_distance(box[k]));
         const bool crosses = lo <= 0.0 && hi > 0.0;  // only these boxes are cut
@@ -112,12 +112,12 @@ ProjectedPoints project_boxes(const std::vector<glm::dvec3>& corners, const Plan
 
 // The receivers' PPLS box, kept within the visible region's: receiver boxes reach behind the
 // viewer, where PPLS stretches toward w = εW, but only what the camera sees needs the map.
-Aabb visible_receivers_box(const Aabb& receivers_box, const ConvexPolyhedron& visible, const Plane& start,
-                           const glm::dmat4& to_ppls, double min_w) {
+Aabb visible_receivers_box(const Aabb& ppls_receivers_box, const ConvexPolyhedron& visible, const Plane& start,
+                           const glm::dmat4& ppls_from_world, double min_w) {
     const ConvexPolyhedron seen = clip(visible, start, tolerance_for(visible.bounds()));
-    if (seen.empty()) return receivers_box;
-    const Aabb seen_box = bounds_of(project(seen.vertices, to_ppls, min_w).points);
-    return {glm::max(receivers_box.min, seen_box.min), glm::min(receivers_box.max, seen_box.max)};
+    if (seen.empty()) return ppls_receivers_box;
+    const Aabb ppls_seen_box = bounds_of(project(seen.vertices, ppls_from_world, min_w).points);
+    return {glm::max(ppls_receivers_box.min, ppls_seen_box.min), glm::min(ppls_receivers_box.max, ppls_seen_box.max)};
 }
 
 }  // namespace
@@ -126,54 +126,55 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
     ShadowSetup setup;
     const auto body = start_warp("xpsm", in, s, setup, trace);
     if (!body) return setup;
-    const std::vector<glm::dvec3> receivers = corners_within(in.receivers, body->visible.bounds());
-    const std::vector<glm::dvec3> casters = corners_within(in.casters, body->body.bounds());
-    if (receivers.empty() || casters.empty()) {
-        fall_back_to_focused(fallback::named(fallback::nothing_to_warp, "nothing to warp; focused map used"), in,
+    const std::vector<glm::dvec3> ws_receivers = corners_within(in.receivers, body->visible.bounds());
+    const std::vector<glm::dvec3> ws_casters = corners_within(in.casters, body->body.bounds());
+    if (ws_receivers.empty() || ws_casters.empty()) {
+        fall_back_to_focused(Note{NoteKind::nothing_to_warp, "nothing to warp; focused map used"}, in,
                              *body, setup, trace);
         return setup;
     }
 
     // Step 1: LightSpace, origin at the viewer, z along the light.
-    const glm::dmat4 light_space =
-        light_basis(in.light.direction, stable_up_hint(in.light.direction), in.camera.position).world_to_light;
-    const std::vector<glm::dvec3> light_casters = transformed(casters, light_space);
-    const std::vector<glm::dvec3> light_receivers = transformed(receivers, light_space);
+    const glm::dmat4 light_from_world =
+        light_basis(in.light.direction, stable_up_hint(in.light.direction), in.camera.position).light_from_world;
+    const std::vector<glm::dvec3> ls_casters = transformed(ws_casters, light_from_world);
+    const std::vector<glm::dvec3> ls_receivers = transformed(ws_receivers, light_from_world);
     // Step 2: the view vector in light space. Step 3: its xy direction.
-    const glm::dvec3 v = glm::dmat3(light_space) * in.camera.view_direction();
+    const glm::dvec3 v = glm::dmat3(light_from_world) * in.camera.view_direction();
     const double v_xy = glm::length(glm::dvec2(v));
     record(trace, [&](Trace& t) {
         t.add("xpsm-1", "LightSpace", "look-at along the light from the viewer: the light travels along +z",
               Space::light)
-            .value("LightSpace", light_space)
-            .shape("Casters", PointSet{light_casters}).shape("Receivers", PointSet{light_receivers});
-        t.set_frame(Space::light, light_space);
+            .value("LightSpace", light_from_world)
+            .shape("Casters", PointSet{ls_casters}).shape("Receivers", PointSet{ls_receivers});
+        t.set_frame(Space::light, light_from_world);
         t.add("xpsm-2", "V", "the view vector in light space", Space::light).value("V", v);
         t.add("xpsm-3", "unitP", "V.xy / |V.xy|; |V.xy| < 0.1 is the miner's lamp case", Space::light)
             .value("abs_V_xy", v_xy)
             .value("unitP", v_xy > 0 ? glm::dvec2(v) / v_xy : glm::dvec2(0.0));
     });
     if (v_xy < 0.1) {
-        fall_back_to_focused(fallback::named(fallback::miners_lamp, "|V.xy| = " + std::to_string(v_xy) +
-                                 " < 0.1, the light is almost parallel to the view; focused map used"),
+        fall_back_to_focused(Note{NoteKind::miners_lamp, "|V.xy| = " + std::to_string(v_xy) +
+                                 " < 0.1, the light is almost parallel to the view; focused map used"},
                              in, *body, setup, trace);
         return setup;
     }
-    const Warp warp = projection_vector(glm::dvec2(v) / v_xy, v_xy, light_casters, light_receivers, s, trace);
-    const glm::dmat4 ppls = ppls_transform(warp, trace);
-    record(trace, [&](Trace& t) { t.set_frame(Space::ppls, ppls * light_space); });
+    const Warp warp = projection_vector(glm::dvec2(v) / v_xy, v_xy, ls_casters, ls_receivers, s, trace);
+    const glm::dmat4 ppls_from_light = ppls_transform(warp, trace);  // steps 8 to 10: PPLS Transform
+    record(trace, [&](Trace& t) { t.set_frame(Space::ppls, ppls_from_light * light_from_world); });
 
     // Steps 11 and 12: PPLS points (boxes cut at w = εW) and their boxes.
     const double min_w = s.number("epsilonW") * (1.0 - 1e-9);  // the extreme point itself stays in
-    const Plane start = focus_start(light_space, warp);
-    const ProjectedPoints ppls_casters = project_boxes(casters, start, ppls * light_space, min_w);
-    const ProjectedPoints ppls_receivers = project_boxes(receivers, start, ppls * light_space, min_w);
-    const Aabb casters_box = bounds_of(ppls_casters.points);
-    const Aabb receivers_box = visible_receivers_box(bounds_of(ppls_receivers.points), body->visible, start,
-                                                     ppls * light_space, min_w);
+    const Plane start = focus_start(light_from_world, warp);
+    const ProjectedPoints ppls_casters = project_boxes(ws_casters, start, ppls_from_light * light_from_world, min_w);
+    const ProjectedPoints ppls_receivers =
+        project_boxes(ws_receivers, start, ppls_from_light * light_from_world, min_w);
+    const Aabb ppls_casters_box = bounds_of(ppls_casters.points);
+    const Aabb ppls_receivers_box = visible_receivers_box(bounds_of(ppls_receivers.points), body->visible, start,
+                                                          ppls_from_light * light_from_world, min_w);
     // Step 13: FocusRegion, the xy intersection of the two boxes.
-    const glm::dvec2 focus_min = glm::max(glm::dvec2(casters_box.min), glm::dvec2(receivers_box.min));
-    const glm::dvec2 focus_max = glm::min(glm::dvec2(casters_box.max), glm::dvec2(receivers_box.max));
+    const glm::dvec2 focus_min = glm::max(glm::dvec2(ppls_casters_box.min), glm::dvec2(ppls_receivers_box.min));
+    const glm::dvec2 focus_max = glm::min(glm::dvec2(ppls_casters_box.max), glm::dvec2(ppls_receivers_box.max));
     record(trace, [&](Trace& t) {
         t.add("xpsm-11", "PPLS Casters and Receivers",
               "points * LightSpace * PPLS Transform, boxes cut where the focus interval starts; corners with w < εW "
@@ -185,36 +186,38 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
             .shape("PPLS Receivers", PointSet{ppls_receivers.points});
         t.add("xpsm-12", "PPLS CastersBox, ReceiversBox",
               "AABBs of the PPLS points; the receivers' kept within the visible region's", Space::ppls)
-            .shape("PPLS CastersBox", casters_box).shape("PPLS ReceiversBox", receivers_box);
+            .shape("PPLS CastersBox", ppls_casters_box).shape("PPLS ReceiversBox", ppls_receivers_box);
         t.add("xpsm-13", "FocusRegion", "Intersect 2D (PPLS CastersBox, PPLS ReceiversBox)", Space::ppls)
             .value("MinPoint", focus_min).value("MaxPoint", focus_max);
     });
-    if (casters_box.empty() || receivers_box.empty() || focus_min.x >= focus_max.x || focus_min.y >= focus_max.y) {
-        fall_back_to_focused(fallback::named(fallback::empty_focus_region, "no caster's light rays meet a receiver in PPLS; focused map used"),
+    if (ppls_casters_box.empty() || ppls_receivers_box.empty() || focus_min.x >= focus_max.x ||
+        focus_min.y >= focus_max.y) {
+        fall_back_to_focused(Note{NoteKind::empty_focus_region, "no caster's light rays meet a receiver in PPLS; focused map used"},
                              in, *body, setup, trace);
         return setup;
     }
 
     // Step 14: FocusRegionBasis. Step 15: its inverse, the unit cube transform.
-    const double z_min = std::min(casters_box.min.z, receivers_box.min.z);
-    const double z_max = std::max(casters_box.max.z, receivers_box.max.z);
+    const double z_min = std::min(ppls_casters_box.min.z, ppls_receivers_box.min.z);
+    const double z_max = std::max(ppls_casters_box.max.z, ppls_receivers_box.max.z);
     const Aabb focus{{focus_min, z_min}, {focus_max, z_max}};
-    const glm::dmat4 basis = from_rows({focus.extent().x, 0, 0, focus.min.x}, {0, focus.extent().y, 0, focus.min.y},
-                                       {0, 0, focus.extent().z, focus.min.z}, {0, 0, 0, 1});
-    const glm::dmat4 unit_cube = box_to_unit_cube(focus);
+    const glm::dmat4 ppls_from_uvz = from_rows({focus.extent().x, 0, 0, focus.min.x},  // step 14: FocusRegionBasis
+                                               {0, focus.extent().y, 0, focus.min.y},
+                                               {0, 0, focus.extent().z, focus.min.z}, {0, 0, 0, 1});
+    const glm::dmat4 uvz_from_ppls = unit_from_box(focus);  // step 15: UnitCubeTransform
     // Steps 16 and 17: our maps stay in [0,1]^3, so NormalizedSpace is the identity.
     ShadowMap map;
-    map.world_to_uvz = unit_cube * ppls * light_space;
+    map.world_to_uvz = uvz_from_ppls * ppls_from_light * light_from_world;  // step 17: XPSM Transform
     map.z_bias_scale = 1.0 / focus.extent().z;  // step 18: bias / (MaxZ - MinZ)
     setup.maps.push_back(map);
     record(trace, [&](Trace& t) {
         t.add("xpsm-14", "FocusRegionBasis", "scale (Max - Min) and offset Min, with ZMin/ZMax of both boxes",
               Space::ppls)
-            .value("ZMin", z_min).value("ZMax", z_max).value("FocusRegionBasis", basis)
+            .value("ZMin", z_min).value("ZMax", z_max).value("FocusRegionBasis", ppls_from_uvz)
             .shape("focus region", focus);
         t.add("xpsm-15", "UnitCubeTransform",
               "FocusRegionBasis^-1: (p - Min) / (Max - Min) (the seed's printed step-15 signs are wrong; 3.8 is right)",
-              Space::unit).value("UnitCubeTransform", unit_cube);
+              Space::unit).value("UnitCubeTransform", uvz_from_ppls);
         t.add("xpsm-16", "NormalizedSpace", "identity: maps stay in [0,1]^3 (D3D/OpenGL NDC would follow here)",
               Space::unit).value("NormalizedSpace", glm::dmat4(1.0));
         t.add("xpsm-17", "XPSM Transform", "LightSpace, PPLS Transform, UnitCubeTransform, NormalizedSpace",
@@ -222,8 +225,14 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
         t.add("xpsm-18", "Z bias", "Z' = (Z - bias / (MaxZ - MinZ)) / W", Space::unit)
             .value("z_bias_scale", map.z_bias_scale);
     });
-    record_output(setup, receivers, trace);
+    record_output(setup, ws_receivers, trace);
     return setup;
+}
+
+std::vector<SettingSpec> xpsm_settings() {
+    return {{"coef", "warp strength: lengthP = coef / cos γ (1 / world units)", "0.05", 1e-6, 100.0, {}},
+            {"epsilonW", "how close to w = 0 the warp may push a caster or receiver", "0.085", 1e-3, 0.999, {}},
+            body_kernel_setting()};
 }
 
 }  // namespace shadowlab

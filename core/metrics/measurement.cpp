@@ -14,10 +14,37 @@ ShadowSetup timed_setup(const MeasureContext& c, const Method& method, const Set
     best_ms = INFINITY;
     for (int run = 0; run < 5; ++run) {
         const Stopwatch watch;
-        setup = method.compute(gather_inputs(c.scene.camera, c.scene.light, c.boxes), settings, nullptr);
+        setup = method.compute_maps(gather_inputs(c.scene.camera, c.scene.light, c.boxes), settings, nullptr);
         best_ms = std::min(best_ms, watch.ms());
     }
     return setup;
+}
+
+Measurement measure_maps(const MeasureContext& c, const Method& method, const Settings& settings, int resolution,
+                         double bias) {
+    Measurement m;
+    m.method = method.name;
+    m.resolution = resolution;
+    m.bias = bias;
+    const ShadowSetup setup = timed_setup(c, method, settings, m.setup_ms);
+    m.fallbacks = setup.fallbacks;
+    const Stopwatch watch;
+    const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
+    m.raster_ms = watch.ms();
+    m.error = measure_shadow_error(c.scene, c.reference, depth, setup, m.bias);
+    return m;
+}
+
+Measurement measure_geometry(const MeasureContext& c, const Method& method, const Settings& settings) {
+    const GeometryResult result = method.compute_geometry(c.scene, c.triangles, c.reference, settings, nullptr);
+    Measurement m;
+    m.method = method.name;
+    m.error = judge_shadows(c.scene, c.reference, result.shadowed);
+    m.setup_ms = result.setup_ms;
+    m.raster_ms = result.raster_ms;
+    m.limits = result.limits;
+    m.geometry = result.cost;
+    return m;
 }
 
 }  // namespace
@@ -28,31 +55,10 @@ MeasureContext prepare_measurement(const Scene& scene, int width, int height) {
     return c;
 }
 
-Measurement measure_method(const MeasureContext& c, const Method& method, const Settings& settings, int resolution,
-                           double bias) {
-    Measurement m;
-    m.method = method.name;
-    m.resolution = resolution;
-    m.bias = bias;
-    const ShadowSetup setup = timed_setup(c, method, settings, m.setup_ms);
-    m.fallback = setup.fallback;
-    const Stopwatch watch;
-    const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup.maps.at(0), resolution);
-    m.raster_ms = watch.ms();
-    m.error = measure_shadow_error(c.scene, c.reference, depth, setup.maps.at(0), m.bias);
-    return m;
-}
-
-Measurement measure_technique(const MeasureContext& c, const Technique& technique, const Settings& settings) {
-    const TechniqueResult result = technique.compute(c.scene, c.triangles, c.reference, settings, nullptr);
-    Measurement m;
-    m.method = technique.name;
-    m.error = judge_shadows(c.scene, c.reference, result.shadowed);
-    m.setup_ms = result.setup_ms;
-    m.raster_ms = result.raster_ms;
-    m.fallback = result.fallback;
-    m.geometry = result.cost;
-    return m;
+Measurement measure(const MeasureContext& c, const Method& method, const Settings& settings, int resolution,
+                    double bias) {
+    return method.makes_maps() ? measure_maps(c, method, settings, resolution, bias)
+                               : measure_geometry(c, method, settings);
 }
 
 }  // namespace shadowlab

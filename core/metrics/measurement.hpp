@@ -5,11 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "methods/method.hpp"
 #include "metrics/shadow_error.hpp"
 #include "reference/exact_shadows.hpp"
+#include "registry/method.hpp"
 #include "scene/tessellation.hpp"
-#include "techniques/technique.hpp"
 
 namespace shadowlab {
 
@@ -29,16 +28,20 @@ struct Measurement {
     double bias = -1.0;  // world units; negative: slope-scaled per pixel
     ShadowError error;
     double setup_ms = 0.0, raster_ms = 0.0;
-    std::optional<std::string> fallback;
-    std::optional<GeometryCost> geometry;  // techniques only: polygons drawn, fragments per pixel
+    std::vector<Note> fallbacks;           // maps: the degradations taken
+    std::vector<Note> limits;              // geometric techniques: the limits met
+    std::optional<GeometryCost> geometry;  // geometric techniques only: polygons drawn, fragments per pixel
+
+    // What the method told the user: a map's fallbacks, a technique's limits.
+    const std::vector<Note>& notes() const { return geometry ? limits : fallbacks; }
 };
 
-// bias: world units along the light; negative: slope-scaled per pixel (slope_scaled_bias).
-Measurement measure_method(const MeasureContext& context, const Method& method, const Settings& settings,
-                           int resolution, double bias);
-
-// A geometric technique against the same reference: error, the cost of building its geometry
-// (setup) and of judging the pixels (raster), its polygons and fill.
-Measurement measure_technique(const MeasureContext& context, const Technique& technique, const Settings& settings);
+// One method against the reference. A map method: its setup (the fastest of a few runs), its maps
+// rasterized at `resolution` texels per side of the texture, judged with `bias` (world units along
+// the light; negative: slope-scaled per pixel, slope_scaled_bias). A geometric technique: the cost
+// of building its geometry (setup) and of judging the pixels (raster), its polygons and fill;
+// resolution and bias do not apply.
+Measurement measure(const MeasureContext& context, const Method& method, const Settings& settings, int resolution,
+                    double bias);
 
 }  // namespace shadowlab

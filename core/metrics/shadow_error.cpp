@@ -6,7 +6,7 @@
 namespace shadowlab {
 
 double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, const glm::dvec2& uv_down,
-                              int resolution) {
+                              double resolution) {
     const glm::dmat2 j(uv_right - uv, uv_down - uv);  // columns: per pixel right, per pixel down
     // Smallest singular value of a 2x2 matrix from its Frobenius norm and determinant.
     const double f = glm::dot(j[0], j[0]) + glm::dot(j[1], j[1]), det = std::abs(glm::determinant(j));
@@ -14,16 +14,7 @@ double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, 
     return sigma_min > 0.0 ? 1.0 / (resolution * sigma_min) : INFINITY;
 }
 
-double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
-    const glm::dmat4& m = map.world_to_uvz;
-    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
-    const double a = glm::dot(glm::dvec3(m[0][2], m[1][2], m[2][2]), l);  // d_pre's slope along l
-    const double c = glm::dot(glm::dvec3(m[0][3], m[1][3], m[2][3]), l);  // w's slope along l
-    const double slope = (a * h.w - h.z * c) / (h.w * h.w);
-    return slope > 0.0 ? 1.0 / slope : INFINITY;
-}
-
-double slope_scaled_bias(const ShadowMap& map, int resolution, const glm::dvec3& l, const glm::dvec3& p,
+double slope_scaled_bias(const ShadowMap& map, double texels, const glm::dvec3& l, const glm::dvec3& p,
                          double cos_theta) {
     // Two directions across the light, and how far (u, v) moves along each per world unit.
     const glm::dvec3 a = glm::normalize(glm::cross(l, std::abs(l.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
@@ -31,9 +22,28 @@ double slope_scaled_bias(const ShadowMap& map, int resolution, const glm::dvec3&
     const glm::dvec2 uv(world_to_uvz(map, p));
     const double h = 1e-3 * (1.0 + glm::length(p));
     const double extent = texel_extent_in_pixels(uv, glm::dvec2(world_to_uvz(map, p + h * a)),
-                                                 glm::dvec2(world_to_uvz(map, p + h * b)), resolution) * h;
+                                                 glm::dvec2(world_to_uvz(map, p + h * b)), texels) * h;
     const double tan_theta = std::min(10.0, std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)) / std::max(cos_theta, 1e-6));
     return extent * (1.0 + tan_theta);
+}
+
+namespace {
+
+glm::dvec3 along_light(const Light& light, const glm::dvec3& p) {
+    return light.is_directional() ? light.direction : glm::normalize(p - light.position);
+}
+
+}  // namespace
+
+double bias_at(const ShadowSetup& setup, int texture_resolution, const Light& light, const glm::dvec3& p,
+               double cos_theta, double bias) {
+    if (bias >= 0.0) return bias;
+    const int which = select_map(setup, p);
+    if (which < 0) return 0.0;
+    const ShadowMap& map = setup.maps[which];
+    const double slope_scaled =
+        slope_scaled_bias(map, tile_resolution(map, texture_resolution), along_light(light, p), p, cos_theta);
+    return std::isfinite(slope_scaled) ? slope_scaled : 0.0;
 }
 
 namespace {
@@ -43,10 +53,6 @@ constexpr double kDepthBufferSteps = 16777216.0;  // a 24-bit depth buffer
 // Faces turned from the light (or edge-on to it) are dark by shading whatever a map says: only
 // pixels of receivers that face the light are judged.
 constexpr float kMinFacing = 1e-3f;
-
-glm::dvec3 along_light(const Scene& scene, const glm::dvec3& p) {
-    return scene.light.is_directional() ? scene.light.direction : glm::normalize(p - scene.light.position);
-}
 
 bool receives(const Scene& scene, const ReferenceImage& ref, size_t i) {
     return ref.visible[i] && scene.objects[ref.object[i]].receives && ref.facing[i] > kMinFacing;
@@ -68,7 +74,7 @@ long neighbour(const ReferenceImage& ref, int x, int y, int dx, int dy, double& 
     return -1;
 }
 
-double pixel_m(const ReferenceImage& ref, const ShadowMap& map, int resolution, int x, int y) {
+double pixel_m(const ReferenceImage& ref, const ShadowMap& map, double texels, int x, int y) {
     double sx = 1, sy = 1;
     const long right = neighbour(ref, x, y, 1, 0, sx), down = neighbour(ref, x, y, 0, 1, sy);
     if (right < 0 || down < 0) return 0.0;
@@ -77,7 +83,7 @@ double pixel_m(const ReferenceImage& ref, const ShadowMap& map, int resolution, 
     if (!(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1)) return 0.0;  // off the map: lit, no texels
     const glm::dvec2 du = sx * (glm::dvec2(world_to_uvz(map, ref.position[right])) - uv);
     const glm::dvec2 dv = sy * (glm::dvec2(world_to_uvz(map, ref.position[down])) - uv);
-    const double m = texel_extent_in_pixels(uv, uv + du, uv + dv, resolution);
+    const double m = texel_extent_in_pixels(uv, uv + du, uv + dv, texels);
     return std::isfinite(m) ? m : 0.0;
 }
 
@@ -123,22 +129,26 @@ AliasingStats statistics(std::vector<double> values) {
 }  // namespace
 
 ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, const DepthMap& depth,
-                                 const ShadowMap& map, double bias) {
+                                 const ShadowSetup& setup, double bias) {
     ShadowError e = unjudged(ref);
     std::vector<double> ms, depth_steps;
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
             const size_t i = size_t(y) * ref.width + x;
             if (!receives(scene, ref, i)) continue;
-            const double pixel_bias =
-                bias >= 0.0 ? bias : slope_scaled_bias(map, depth.resolution, along_light(scene, ref.position[i]),
-                                                       ref.position[i], ref.facing[i]);
-            judge(e, ref, i, in_shadow(depth, map, ref.position[i], std::isfinite(pixel_bias) ? pixel_bias : 0.0));
-            if (const double step = world_per_depth_unit(map, along_light(scene, ref.position[i]), ref.position[i]) /
-                                    kDepthBufferSteps;
+            const glm::dvec3& p = ref.position[i];
+            const int which = select_map(setup, p);
+            if (which < 0) {  // no map for this point: lit
+                judge(e, ref, i, false);
+                continue;
+            }
+            const ShadowMap& map = setup.maps[which];
+            const double texels = tile_resolution(map, depth.resolution);
+            judge(e, ref, i, in_shadow(depth, setup, p, bias_at(setup, depth.resolution, scene.light, p, ref.facing[i], bias)));
+            if (const double step = world_per_depth_unit(map, along_light(scene.light, p), p) / kDepthBufferSteps;
                 std::isfinite(step))
                 depth_steps.push_back(step);
-            if (const double m = pixel_m(ref, map, depth.resolution, x, y); m > 0.0) {
+            if (const double m = pixel_m(ref, map, texels, x, y); m > 0.0) {
                 e.m_image[i] = float(m);
                 ms.push_back(m);
             }

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "methods/method.hpp"
+#include "maps/map_lookup.hpp"
 #include "raster/depth_map.hpp"
 #include "reference/exact_shadows.hpp"
 
@@ -29,9 +29,10 @@ struct ShadowError {
     std::vector<PixelVerdict> verdicts;   // per pixel
 };
 
-// `bias` in world units along the light; a negative bias asks for the slope-scaled one below.
+// `bias` in world units along the light; a negative bias asks for the slope-scaled one below. Each
+// pixel is judged by the map the setup's selection gives it; m counts that map's texels.
 ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& reference, const DepthMap& depth,
-                                 const ShadowMap& map, double bias);
+                                 const ShadowSetup& setup, double bias);
 
 // The same judgement of a technique without texels (shadow volumes, planar projection): its
 // per-pixel verdicts (1: shadowed) against the reference; m and depth_step stay 0.
@@ -39,16 +40,20 @@ ShadowError judge_shadows(const Scene& scene, const ReferenceImage& reference, c
 
 // The bias a texel needs at p, as engines' slope-scaled bias: the texel's world size across the
 // light times (1 + tan θ), θ between the surface and the light (tan clamped to 10), so that the
-// surface within one texel never rises above its own stored depth.
-double slope_scaled_bias(const ShadowMap& map, int resolution, const glm::dvec3& light_direction,
+// surface within one texel never rises above its own stored depth. `texels` across the map's tile
+// (tile_resolution).
+double slope_scaled_bias(const ShadowMap& map, double texels, const glm::dvec3& light_direction,
                          const glm::dvec3& p, double cos_theta);
 
-// World units along the light per unit of stored depth at p: 1 / (d d / d t), d = d_pre / w.
-double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& light_direction, const glm::dvec3& p);
+// The bias judged at p: `bias` when it is >= 0, else the slope-scaled bias of the map the setup
+// picks for p (0 where none does, or where the slope-scaled bias is not finite). The GPU pass
+// applies the same.
+double bias_at(const ShadowSetup& setup, int texture_resolution, const Light& light, const glm::dvec3& p,
+               double cos_theta, double bias);
 
 // m at one pixel from the map coordinates of it and its neighbours one pixel right and down:
 // J = d(u, v)/d(pixel); a texel (1/N wide in u and v) spans 1 / (N σ_min(J)) pixels at most.
 double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, const glm::dvec2& uv_down,
-                              int resolution);
+                              double resolution);
 
 }  // namespace shadowlab

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "math/stopwatch.hpp"
-#include "methods/fallbacks.hpp"
 #include "planar/planar_projection.hpp"
 #include "techniques/pixel_footprint.hpp"
 
@@ -54,27 +53,27 @@ void record_receiver(Trace* trace, const Scene& scene, const ReceiverPlane& r, c
     });
 }
 
-std::vector<std::string> limits(const Receivers& r, int below, int beyond) {
-    std::vector<std::string> out;
+std::vector<Note> limits(const Receivers& r, int below, int beyond) {
+    std::vector<Note> out;
     if (!r.not_planes.empty())
-        out.push_back(fallback::named(fallback::not_planar_receiver,
-                                      some_names(r.not_planes) + " receive but are not planes: no shadow falls on them"));
+        out.push_back(Note{NoteKind::not_planar_receiver,
+                                      some_names(r.not_planes) + " receive but are not planes: no shadow falls on them"});
     if (below > 0)
-        out.push_back(fallback::named(fallback::below_plane, std::to_string(below) +
+        out.push_back(Note{NoteKind::below_plane, std::to_string(below) +
                                                                  " caster triangles reach below a receiving plane and "
-                                                                 "throw false shadows onto it"));
+                                                                 "throw false shadows onto it"});
     if (beyond > 0)
-        out.push_back(fallback::named(fallback::beyond_light, std::to_string(beyond) +
+        out.push_back(Note{NoteKind::beyond_light, std::to_string(beyond) +
                                                                   " caster triangles reach as far from the plane as " +
-                                                                  "the light (w <= 0): clipped, else anti-shadows"));
+                                                                  "the light (w <= 0): clipped, else anti-shadows"});
     return out;
 }
 
 }  // namespace
 
-TechniqueResult compute_planar(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
+GeometryResult compute_planar(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
                                const Settings&, Trace* trace) {
-    TechniqueResult result;
+    GeometryResult result;
     const std::size_t pixels = std::size_t(image.width) * image.height;
     result.shadowed.assign(pixels, 0);
     std::vector<int> fragments(pixels, 0);
@@ -101,6 +100,7 @@ TechniqueResult compute_planar(const Scene& scene, const WorldTriangles& triangl
         });
         result.raster_ms += raster.ms();
         result.cost.polygons += f.polygons.size();
+        result.stencil.insert(result.stencil.end(), f.polygons.begin(), f.polygons.end());
     }
     result.cost = geometry_cost(result.cost.polygons, fragments);
     record(trace, [&](Trace& t) {
@@ -111,7 +111,8 @@ TechniqueResult compute_planar(const Scene& scene, const WorldTriangles& triangl
             .value("image", glm::dvec2(image.width, image.height)).value("shadowed pixels", double(shadowed))
             .value("fill mean", result.cost.fill_mean).value("fill max", result.cost.fill_max);
     });
-    result.fallback = joined_limits(limits(r, below, beyond));
+    result.limits = limits(r, below, beyond);
+    result.rule = StencilRule::cover;
     return result;
 }
 

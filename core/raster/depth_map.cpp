@@ -3,6 +3,7 @@
 #include "raster/depth_map.hpp"
 
 #include "geometry/homogeneous_clip.hpp"
+#include "maps/map_lookup.hpp"
 
 #include <algorithm>
 #include <array>
@@ -16,27 +17,36 @@ constexpr double kMinRelativeW = 1e-9;  // clipped w stays above this fraction o
 
 using Polygon = HomogeneousPolygon;  // (u, v, d_pre, w)
 
-// The part of a triangle with w > 0 and 0 <= u, v <= w: in front of the map's centre and on it.
+// The part of a polygon with w > 0 and 0 <= u, v <= w: in front of the map's centre and on it.
 // The w plane sits a hair above 0, relative to the triangle's scale, so the division stays finite.
-Polygon clip_to_map(const std::array<glm::dvec4, 3>& triangle) {
-    const double min_w = kMinRelativeW * std::max({std::abs(triangle[0].w), std::abs(triangle[1].w),
-                                                   std::abs(triangle[2].w)});
+Polygon clip_to_map(Polygon polygon) {
+    double largest_w = 0.0;
+    for (const glm::dvec4& h : polygon) largest_w = std::max(largest_w, std::abs(h.w));
+    const double min_w = kMinRelativeW * largest_w;
     if (!(min_w > 0.0)) return {};
     const ClipPlane planes[] = {{{0, 0, 0, 1}, min_w}, {{1, 0, 0, 0}, 0.0}, {{-1, 0, 0, 1}, 0.0},
                                 {{0, 1, 0, 0}, 0.0},   {{0, -1, 0, 1}, 0.0}};
-    Polygon polygon(triangle.begin(), triangle.end());
     for (const ClipPlane& plane : planes) polygon = clip(polygon, plane);
     return polygon;
 }
 
-// A vertex after division: position in texels, depth in map units.
+// A vertex after division: position in texels of the texture, depth in map units.
 struct ScreenVertex {
     glm::dvec2 p;
     double depth;
 };
 
-ScreenVertex to_screen(const glm::dvec4& h, int resolution) {
-    return {glm::dvec2(h.x, h.y) / h.w * static_cast<double>(resolution), h.z / h.w};
+ScreenVertex to_screen(const glm::dvec4& h, const ShadowMap& map, int resolution) {
+    return {texture_uv(map, glm::dvec2(h.x, h.y) / h.w) * static_cast<double>(resolution), h.z / h.w};
+}
+
+// The texels of one map's tile: first and last column and row.
+struct TexelRange {
+    glm::ivec2 first, last;
+};
+
+TexelRange tile_texels(const ShadowMap& map, int resolution) {
+    return {texel_of(map, glm::dvec2(0.0), resolution), texel_of(map, glm::dvec2(1.0), resolution)};
 }
 
 // Twice the signed area of (a, b, p): positive when p lies left of a -> b. Always evaluated from
@@ -53,13 +63,12 @@ bool owns_edge(const glm::dvec2& a, const glm::dvec2& b) { return b.y < a.y || (
 
 bool inside(double e, const glm::dvec2& a, const glm::dvec2& b) { return e > 0.0 || (e == 0.0 && owns_edge(a, b)); }
 
-// First and last texel whose centre (i + 0.5) lies in [lo, hi], within the map.
-std::pair<int, int> texel_span(double lo, double hi, int resolution) {
-    return {std::max(0, static_cast<int>(std::ceil(lo - 0.5))),
-            std::min(resolution - 1, static_cast<int>(std::floor(hi - 0.5)))};
+// First and last texel whose centre (i + 0.5) lies in [lo, hi], within [first, last].
+std::pair<int, int> texel_span(double lo, double hi, int first, int last) {
+    return {std::max(first, static_cast<int>(std::ceil(lo - 0.5))), std::min(last, static_cast<int>(std::floor(hi - 0.5)))};
 }
 
-void draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, DepthMap& map) {
+void draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, const TexelRange& tile, DepthMap& map) {
     double area = edge(a.p, b.p, c.p);
     if (area == 0.0) return;
     if (area < 0.0) {  // both windings are drawn: make it counter-clockwise
@@ -67,8 +76,8 @@ void draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, DepthMap& map
         area = -area;
     }
     const glm::dvec2 lo = glm::min(a.p, glm::min(b.p, c.p)), hi = glm::max(a.p, glm::max(b.p, c.p));
-    const auto [x0, x1] = texel_span(lo.x, hi.x, map.resolution);
-    const auto [y0, y1] = texel_span(lo.y, hi.y, map.resolution);
+    const auto [x0, x1] = texel_span(lo.x, hi.x, tile.first.x, tile.last.x);
+    const auto [y0, y1] = texel_span(lo.y, hi.y, tile.first.y, tile.last.y);
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
             const glm::dvec2 p(x + 0.5, y + 0.5);
@@ -80,36 +89,49 @@ void draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, DepthMap& map
         }
 }
 
-// The texel containing t in [0, 1] along one axis (t = 1 belongs to the last texel).
-int texel_of(double t, int resolution) { return std::min(static_cast<int>(t * resolution), resolution - 1); }
+// A paraboloid map's projected triangle: the part on its hemisphere's side, cut where the plane
+// distance, interpolated along the projected edges, crosses 0 (as gl_ClipDistance does).
+Polygon on_hemisphere(const ShadowMap& map, const std::array<glm::dvec3, 3>& world, const Polygon& projected) {
+    const std::array<double, 3> side{hemisphere_side(map, world[0]), hemisphere_side(map, world[1]),
+                                     hemisphere_side(map, world[2])};
+    return clip_where(projected, [&](std::size_t i) { return side[i]; });
+}
 
-bool in_unit_range(double t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
+void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object, const ShadowMap& map,
+              DepthMap& out) {
+    const TexelRange tile = tile_texels(map, out.resolution);
+    for (std::size_t i = 0; i < triangles.triangles.size(); ++i) {
+        if (!casts_per_object.at(triangles.object[i])) continue;
+        std::array<glm::dvec3, 3> world;
+        std::array<glm::dvec4, 3> homogeneous;
+        for (int k = 0; k < 3; ++k) {
+            world[k] = triangles.vertices[triangles.triangles[i][k]];
+            homogeneous[k] = map_homogeneous(map, world[k]);
+        }
+        Polygon polygon(homogeneous.begin(), homogeneous.end());
+        if (map.projection == Projection::paraboloid) polygon = on_hemisphere(map, world, polygon);
+        polygon = clip_to_map(std::move(polygon));
+        std::vector<ScreenVertex> screen;
+        for (const glm::dvec4& h : polygon) screen.push_back(to_screen(h, map, out.resolution));
+        for (std::size_t k = 1; k + 1 < screen.size(); ++k)
+            draw_triangle(screen[0], screen[k], screen[k + 1], tile, out);
+    }
+}
 
 }  // namespace
 
 DepthMap rasterize_depth(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
-                         const ShadowMap& map, int resolution) {
+                         const ShadowSetup& setup, int resolution) {
     DepthMap out{resolution, std::vector<float>(static_cast<std::size_t>(resolution) * resolution, 1.0f)};
-    for (std::size_t i = 0; i < triangles.triangles.size(); ++i) {
-        if (!casts_per_object.at(triangles.object[i])) continue;
-        std::array<glm::dvec4, 3> homogeneous;
-        for (int k = 0; k < 3; ++k)
-            homogeneous[k] = map.world_to_uvz * glm::dvec4(triangles.vertices[triangles.triangles[i][k]], 1.0);
-        const Polygon polygon = clip_to_map(homogeneous);
-        std::vector<ScreenVertex> screen;
-        for (const glm::dvec4& h : polygon) screen.push_back(to_screen(h, resolution));
-        for (std::size_t k = 1; k + 1 < screen.size(); ++k) draw_triangle(screen[0], screen[k], screen[k + 1], out);
-    }
+    for (const ShadowMap& map : setup.maps) draw_map(triangles, casts_per_object, map, out);
     return out;
 }
 
-bool in_shadow(const DepthMap& depth, const ShadowMap& map, const glm::dvec3& world_point, double bias) {
-    const glm::dvec4 h = map.world_to_uvz * glm::dvec4(world_point, 1.0);
-    if (!(h.w > 0.0)) return false;
-    const double u = h.x / h.w, v = h.y / h.w;
-    if (!in_unit_range(u) || !in_unit_range(v)) return false;
-    const double d = (h.z - map.z_bias_scale * bias) / h.w;
-    return d > depth.at(texel_of(u, depth.resolution), texel_of(v, depth.resolution));
+bool in_shadow(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& world_point, double bias) {
+    const std::optional<MapLookup> at = look_up(setup, world_point, bias);
+    if (!at) return false;
+    const glm::ivec2 texel = texel_of(setup.maps[at->map], at->uv, depth.resolution);
+    return at->depth > depth.at(texel.x, texel.y);
 }
 
 }  // namespace shadowlab

@@ -34,6 +34,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "limits.hpp"
 #include "scene/scene_error.hpp"
 
 namespace shadowlab {
@@ -386,8 +387,11 @@ public:
         check_camera(scene.camera);
         check_light(scene.light);
         if (scene.objects.empty()) fail("objects", "expected at least one object, got none");
+        if (!limits::within(limits::scene_objects, std::int64_t(scene.objects.size())))
+            fail("objects", limits::outside(limits::scene_objects, "count", std::int64_t(scene.objects.size())));
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             check_object(scene.objects[i], "objects[" + std::to_string(i) + "]");
+        check_mesh_triangles(scene);
     }
 
 private:
@@ -454,6 +458,18 @@ private:
     }
 
     // Only the fields the object's shape uses.
+    // Meshes' triangles, each object counted (a file used twice is drawn twice).
+    void check_mesh_triangles(const Scene& scene) const {
+        std::int64_t triangles = 0;
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            if (!scene.objects[i].mesh) continue;
+            triangles += std::int64_t(scene.objects[i].mesh->triangles.size());
+            if (triangles > limits::scene_triangles.max)
+                fail("objects[" + std::to_string(i) + "].file",
+                     limits::outside(limits::scene_triangles, "mesh triangles up to this object", triangles));
+        }
+    }
+
     void check_object(const SceneObject& object, const std::string& path) const {
         finite(object.position, path + ".position");
         finite(object.rotation_deg, path + ".rotation");

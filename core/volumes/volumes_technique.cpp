@@ -4,7 +4,6 @@
 #include <cstdlib>
 
 #include "math/stopwatch.hpp"
-#include "methods/fallbacks.hpp"
 #include "volumes/stencil_count.hpp"
 
 namespace shadowlab {
@@ -26,15 +25,36 @@ std::size_t drawn_polygons(const ShadowVolume& v, CountRule rule) {
     return v.quads.size() + (rule == CountRule::zfail ? v.front_cap.size() + v.back_cap.size() : 0);
 }
 
+// Each polygon |multiplicity| times, reversed where the multiplicity is negative.
+void append(std::vector<HomogeneousPolygon>& out, const std::vector<VolumePolygon>& polygons) {
+    for (const VolumePolygon& p : polygons)
+        for (int k = 0; k < std::abs(p.multiplicity); ++k) {
+            out.push_back(p.vertices);
+            if (p.multiplicity < 0) std::reverse(out.back().begin(), out.back().end());
+        }
+}
+
+// What the GPU draws into the stencil buffer (Everitt and Kilgard 2002, section 3): the extruded
+// silhouette quads, and for z-fail the front and back caps that close the volume.
+std::vector<HomogeneousPolygon> stencil_polygons(const ShadowVolume& v, CountRule rule) {
+    std::vector<HomogeneousPolygon> out;
+    append(out, v.quads);
+    if (rule == CountRule::zfail) {
+        append(out, v.front_cap);
+        append(out, v.back_cap);
+    }
+    return out;
+}
+
 // The open or non-manifold casters, by name; they get two-sided volumes (silhouette.hpp).
-std::vector<std::string> open_mesh_limits(const std::vector<ObjectTopology>& topology) {
+std::vector<Note> open_mesh_limits(const std::vector<ObjectTopology>& topology) {
     std::string names;
     for (const ObjectTopology& t : topology)
         if (!t.closed())
             names += (names.empty() ? "'" : ", '") + t.name + "' (" + std::to_string(t.open_edges) + " open, " +
                      std::to_string(t.non_manifold_edges) + " non-manifold edges)";
     if (names.empty()) return {};
-    return {fallback::named(fallback::open_mesh, names + ": two-sided volumes, silhouette edges with multiplicity")};
+    return {Note{NoteKind::open_mesh, names + ": two-sided volumes, silhouette edges with multiplicity"}};
 }
 
 // Pixels where the count from the eye is not 0: z-pass is wrong there (the eye is in a volume).
@@ -112,10 +132,10 @@ void record_count(Trace* trace, const StencilCounts& c, const ReferenceImage& im
 
 }  // namespace
 
-TechniqueResult compute_volumes(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
+GeometryResult compute_volumes(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
                                 const Settings& settings, Trace* trace) {
     const CountRule rule = settings.choice("count") == "zpass" ? CountRule::zpass : CountRule::zfail;
-    TechniqueResult r;
+    GeometryResult r;
     const Stopwatch setup;
     const std::vector<ObjectTopology> topology = caster_topology(scene, triangles);
     const Silhouette silhouette = find_silhouette(topology, triangles, scene.light);
@@ -124,7 +144,7 @@ TechniqueResult compute_volumes(const Scene& scene, const WorldTriangles& triang
     record_geometry(trace, topology, silhouette, volume, scene.camera);
 
     const Stopwatch raster;
-    const StencilCounts counts = count_stencil(volume, scene.camera, image, rule);
+    StencilCounts counts = count_stencil(volume, scene.camera, image, rule);
     const std::vector<int>& count = rule == CountRule::zfail ? counts.zfail : counts.zpass;
     r.shadowed.assign(count.size(), 0);
     std::size_t shadowed = 0;
@@ -132,13 +152,16 @@ TechniqueResult compute_volumes(const Scene& scene, const WorldTriangles& triang
     r.raster_ms = raster.ms();
     r.cost = geometry_cost(drawn_polygons(volume, rule), counts.fragments);
     record_count(trace, counts, image, rule, r.cost, shadowed);
+    r.stencil = stencil_polygons(volume, rule);
+    r.rule = rule == CountRule::zpass ? StencilRule::zpass : StencilRule::zfail;
 
-    std::vector<std::string> limits = open_mesh_limits(topology);
+    std::vector<Note> limits = open_mesh_limits(topology);
     if (const std::size_t wrong = eye_inside_pixels(counts, image); rule == CountRule::zpass && wrong > 0)
-        limits.push_back(fallback::named(fallback::eye_in_volume,
+        limits.push_back(Note{NoteKind::eye_in_volume,
                                          "z-pass counts are off at " + std::to_string(wrong) +
-                                             " pixels (the eye or the near plane is in a volume); count=zfail is right"));
-    r.fallback = joined_limits(limits);
+                                             " pixels (the eye or the near plane is in a volume); count=zfail is right"});
+    r.limits = std::move(limits);
+    r.counts = std::move(counts);
     return r;
 }
 

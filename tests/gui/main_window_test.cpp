@@ -123,7 +123,7 @@ private slots:
         QComboBox* selector = window_->controls()->method_selector();
         selector->setCurrentIndex(selector->findData("volumes"));
         QApplication::processEvents();
-        QVERIFY(window_->inspection()->technique.has_value());
+        QVERIFY(window_->inspection()->geometry.has_value());
         QVERIFY2(changed_share(map_image, camera->grab()) > 0.0005, "the Camera view did not change for volumes");
         auto* inside = window_->controls()->findChild<QCheckBox*>("cameraInShadow");
         QVERIFY(inside);

@@ -4,9 +4,12 @@
 #include <vector>
 #include <glm/glm.hpp>
 
+#include "metrics/shadow_error.hpp"
+#include "model/inspection.hpp"
 #include "reference/exact_shadows.hpp"
 #include "render/rgb_image.hpp"
 #include "scene/scene.hpp"
+#include "views/offscreen_view.hpp"
 
 namespace shadowlab::testing {
 
@@ -79,6 +82,30 @@ inline Agreement agreement(const RgbImage& gpu, const std::vector<int8_t>& cpu, 
             a.agreed += (c[0] > 127) == (cpu[i] == 1);
         }
     return a;
+}
+
+inline Inspection inspect(const Scene& scene, const std::string& method, int resolution) {
+    InspectionRequest request;
+    request.method = method;
+    request.resolution = resolution;
+    return inspect_scene(scene, request);
+}
+
+// The GPU pass's lit mask of a map method against the CPU lookup (in_shadow with the metrics' bias)
+// on a width x height image of the inspection's camera.
+inline Agreement gpu_against_cpu_lookup(const Inspection& in, int width, int height) {
+    ViewOptions options;
+    options.lit_mask = true;
+    const RgbImage gpu = render_view(in, ViewKind::camera, options, width, height);
+    const ReferenceImage& ref = in.reference(width, height);
+    std::vector<int8_t> cpu(ref.visible.size(), -1);
+    for (size_t i = 0; i < cpu.size(); ++i)
+        if (ref.visible[i])
+            cpu[i] = in_shadow(in.depth, in.setup, ref.position[i],
+                               bias_at(in.setup, in.resolution, in.scene.light, ref.position[i], ref.facing[i], in.bias))
+                         ? 0
+                         : 1;
+    return agreement(gpu, cpu, ref);
 }
 
 }  // namespace shadowlab::testing

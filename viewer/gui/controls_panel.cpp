@@ -15,11 +15,6 @@
 namespace shadowlab {
 namespace {
 
-const std::vector<SettingSpec>& settings_of(const std::string& name) {
-    if (const Method* method = find_method(name)) return method->settings;
-    return find_technique(name)->settings;
-}
-
 QSlider* slider(int min, int max, QWidget* parent) {
     auto* s = new QSlider(Qt::Horizontal, parent);
     s->setRange(min, max);
@@ -56,13 +51,16 @@ ControlsPanel::ControlsPanel(QWidget* parent)
       light_label_(new QLabel(this)),
       camera_in_shadow_(new QCheckBox("Camera in shadow", this)) {
     method_->setObjectName("methodSelector");
-    auto add_method = [this](const std::string& name, const std::string& tip) {
-        method_->addItem(QString::fromStdString(name), QString::fromStdString(name));
-        method_->setItemData(method_->count() - 1, QString::fromStdString(tip), Qt::ToolTipRole);
-    };
-    for (const Method& m : all_methods()) add_method(m.name, m.title + ": " + m.description);
-    method_->insertSeparator(method_->count());
-    for (const Technique& t : all_techniques()) add_method(t.name, t.title + ": " + t.description);
+    // The registry's order: the maps, a separator, the geometric techniques.
+    for (const Method& m : all_methods()) {
+        if (method_->count() > 0 && !m.makes_maps() && all_methods()[method_->count() - 1].makes_maps())
+            method_->insertSeparator(method_->count());
+        method_->addItem(QString::fromStdString(m.name), QString::fromStdString(m.name));
+        method_->setItemData(method_->count() - 1,
+                             QString::fromStdString(m.title + ": " + m.description + " (" + to_string(m.produces()) +
+                                                    "; lights: " + m.lights.text() + ")"),
+                             Qt::ToolTipRole);
+    }
     camera_in_shadow_->setObjectName("cameraInShadow");
     camera_in_shadow_->setToolTip("move the camera into a caster's shadow volume: z-pass counts go wrong there, z-fail holds");
     method_->setCurrentText("focused");
@@ -111,12 +109,10 @@ ControlsPanel::ControlsPanel(QWidget* parent)
 
 void ControlsPanel::rebuild_settings() {
     while (settings_form_->rowCount() > 0) settings_form_->removeRow(0);
-    const std::string name = method_->currentData().toString().toStdString();
-    const std::vector<SettingSpec>& specs = settings_of(name);
-    const bool map = find_method(name) != nullptr;
-    resolution_->setEnabled(map);  // a geometric technique has no map
-    bias_->setEnabled(map);
-    for (const SettingSpec& spec : specs) {
+    const Method& method = method_or_throw(method_->currentData().toString().toStdString());
+    resolution_->setEnabled(method.makes_maps());  // a geometric technique has no map
+    bias_->setEnabled(method.makes_maps());
+    for (const SettingSpec& spec : method.settings) {
         QWidget* editor = setting_editor(spec, settings_box_);
         editor->setObjectName(QString::fromStdString(spec.name));
         editor->setToolTip(QString::fromStdString(spec.description));
@@ -126,7 +122,7 @@ void ControlsPanel::rebuild_settings() {
             connect(static_cast<QDoubleSpinBox*>(editor), &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
         settings_form_->addRow(QString::fromStdString(spec.name), editor);
     }
-    settings_box_->setVisible(!specs.empty());
+    settings_box_->setVisible(!method.settings.empty());
 }
 
 InspectionRequest ControlsPanel::request() const {

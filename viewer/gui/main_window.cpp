@@ -189,14 +189,16 @@ void MainWindow::recompute() {
         return;
     }
     steps_->set_trace(inspection_->trace);
-    const std::string fallback = inspection_->fallback().value_or("none");
     const std::string bias = inspection_->bias < 0.0 ? "slope-scaled" : std::to_string(inspection_->bias);
     const std::string what = inspection_->has_map()
                                  ? std::to_string(inspection_->resolution) + "² map, bias " + bias
-                                 : std::to_string(inspection_->technique->image.width) + "x" +
-                                       std::to_string(inspection_->technique->image.height) + " camera image judged";
-    statusBar()->showMessage(QString::fromStdString(inspection_->title() + " — " + what + " — fallback: " + fallback));
-    if (inspection_->fallback()) message(QString::fromStdString("fallback: " + fallback), false);
+                                 : std::to_string(inspection_->image_width) + "x" +
+                                       std::to_string(inspection_->image_height) + " camera image judged";
+    const std::string notes_label = inspection_->has_map() ? "fallback: " : "limits: ";
+    const std::vector<Note>& notes = inspection_->notes();
+    const std::string told = notes_label + (notes.empty() ? "none" : describe(notes));
+    statusBar()->showMessage(QString::fromStdString(inspection_->title() + " — " + what + " — " + told));
+    if (!notes.empty()) message(QString::fromStdString(told), false);
     redraw();
     if (plot_->isVisible() && inspection_->has_map()) {
         try {

@@ -22,7 +22,7 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent), image_(new QLabel(this)
 bool PlotPanel::update_plot(const Scene& scene, const std::string& method_name,
                             const std::map<std::string, std::string>& overrides) {
     const Method* method = find_method(method_name);
-    if (!method) return false;
+    if (!method || !method->makes_maps()) return false;
     const MeasureContext context = prepare_measurement(scene, 320, static_cast<int>(320 / scene.camera.aspect));
     const Settings settings = resolve_settings(method->name, method->settings, overrides);
     ChartSpec chart;
@@ -35,7 +35,7 @@ bool PlotPanel::update_plot(const Scene& scene, const std::string& method_name,
     ChartSeries wrong{"misclassified %", {}, {}, {}, true, {}, {}};
     ChartSeries m{"max m (texel size in pixels)", {}, {}, {}, true, {}, {}};
     for (int resolution : {256, 512, 1024, 2048}) {
-        const Measurement r = measure_method(context, *method, settings, resolution, -1.0);
+        const Measurement r = measure(context, *method, settings, resolution, -1.0);
         wrong.x.push_back(resolution), wrong.y.push_back(std::max(1e-3, 100.0 * r.error.misclassified));
         m.x.push_back(resolution), m.y.push_back(std::max(1e-3, r.error.m.max));
     }

@@ -1,50 +1,64 @@
 #pragma once
-// Everything the views draw for one scene and method, computed once and shared by every view: the
-// step trace and the scene's triangles; for a map method its setup and the first map rasterized on
-// the CPU, for a geometric technique (volumes, planar) its verdicts and stencil polygons instead.
+// Everything the views draw for one scene and method, computed once per change and shared by every
+// view: the step trace, the scene's triangles, and the method's own result: for a map method its
+// setup and every map rasterized into its tile of the texture; for a geometric technique its
+// GeometryResult (verdicts, stencil polygons, counts). The exact reference and the error against
+// it are traced only when a view asks for them, once per image size. No VTK here.
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "methods/method.hpp"
-#include "model/technique_inspection.hpp"
+#include "metrics/shadow_error.hpp"
 #include "raster/depth_map.hpp"
+#include "registry/method.hpp"
 #include "scene/scene.hpp"
 #include "scene/tessellation.hpp"
 
 namespace shadowlab {
 
 struct InspectionRequest {
-    std::string method = "focused";                // a map method or a technique
+    std::string method = "focused";               // any name of the registry
     std::map<std::string, std::string> settings;  // key -> text, checked against the method's specs
-    int resolution = 1024;                        // map texels per side
-    double bias = -1.0;  // world units along the light; < 0: slope-scaled per pixel
-    int image_width = 640, image_height = 0;  // the camera image a technique judges (height 0: by aspect)
+    int resolution = 1024;                        // map texture texels per side
+    double bias = -1.0;                           // world units along the light; < 0: slope-scaled per pixel
+    int image_width = 640, image_height = 0;      // the camera image a technique judges (height 0: by aspect)
 };
 
 struct Inspection {
     Scene scene;
-    const Method* method = nullptr;              // a map method, or
-    std::optional<TechniqueInspection> technique;  // a geometric technique (then no setup, map or depth)
+    const Method* method = nullptr;
     Settings settings;
-    int resolution = 0;
-    double bias = -1.0;  // world units along the light; < 0: slope-scaled per pixel (slope_scaled_bias)
+    int resolution = 0;   // maps: texture texels per side
+    double bias = -1.0;   // world units along the light; < 0: slope-scaled per pixel (slope_scaled_bias)
+    int image_width = 0, image_height = 0;  // the camera image a geometric technique was judged on
     ShadowInputs inputs;
-    ShadowSetup setup;
     Trace trace;
     WorldTriangles triangles;
     std::vector<bool> casters;  // per object
-    DepthMap depth;             // setup.maps.front(), rasterized
+    ShadowSetup setup;          // maps: the method's result
+    DepthMap depth;             // maps: every map of `setup` rasterized into its tile
+    std::optional<GeometryResult> geometry;  // geometric techniques: the method's result
 
-    bool has_map() const { return method != nullptr; }
-    const ShadowMap& map() const { return setup.maps.front(); }  // only with has_map()
-    const std::string& name() const { return method ? method->name : technique->technique->name; }
-    const std::string& title() const { return method ? method->title : technique->technique->title; }
-    const std::optional<std::string>& fallback() const { return method ? setup.fallback : technique->result.fallback; }
+    bool has_map() const { return method->makes_maps(); }
+    const std::string& name() const { return method->name; }
+    const std::string& title() const { return method->title; }
+    // What the user is told: a map method's fallbacks, or a technique's limits.
+    const std::vector<Note>& notes() const { return has_map() ? setup.fallbacks : geometry->limits; }
+
+    // The exact reference of a width x height camera image, traced on the first call for that size.
+    const ReferenceImage& reference(int width, int height) const;
+    // The result judged against reference(width, height): a map's verdicts (slope-scaled bias per
+    // pixel unless a constant bias was asked for), m and depth steps; a technique's verdicts.
+    const ShadowError& error(int width, int height) const;
+
+private:
+    struct Judged;  // the reference and error of one image size
+    mutable std::shared_ptr<Judged> judged_;
 };
 
-// Throws std::invalid_argument naming the method (or technique), setting or resolution at fault.
+// Throws std::invalid_argument naming the method, setting, resolution or image size at fault.
 Inspection inspect_scene(const Scene& scene, const InspectionRequest& request);
 
 }  // namespace shadowlab

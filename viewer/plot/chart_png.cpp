@@ -22,7 +22,7 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
-#include "render/offscreen_view.hpp"
+#include "render/rgb_image.hpp"
 #include "render/x_display.hpp"
 
 namespace shadowlab {

@@ -7,7 +7,9 @@
 #include <vtkImageData.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
+#include <vtkRenderWindow.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
 
 namespace shadowlab {
 
@@ -40,6 +42,15 @@ void write_png(const RgbImage& image, const std::string& file) {
     writer->SetInputData(to_vtk_image(image));
     writer->Write();
     if (writer->GetErrorCode() != 0) throw std::runtime_error("cannot write " + file);
+}
+
+RgbImage grab(vtkRenderWindow* window) {
+    vtkNew<vtkWindowToImageFilter> filter;
+    filter->SetInput(window);
+    filter->SetInputBufferTypeToRGB();
+    filter->ReadFrontBufferOff();
+    filter->Update();
+    return from_vtk_image(filter->GetOutput());
 }
 
 }  // namespace shadowlab

@@ -5,6 +5,7 @@
 #include <vtkSmartPointer.h>
 
 class vtkImageData;
+class vtkRenderWindow;
 
 namespace shadowlab {
 
@@ -20,6 +21,9 @@ struct RgbImage {
 
 vtkSmartPointer<vtkImageData> to_vtk_image(const RgbImage& image);
 RgbImage from_vtk_image(vtkImageData* data);  // 3-component unsigned char data
+
+// What a render window shows now (its back buffer).
+RgbImage grab(vtkRenderWindow* window);
 
 // Throws std::runtime_error naming the file when it cannot be written.
 void write_png(const RgbImage& image, const std::string& file);

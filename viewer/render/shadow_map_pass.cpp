@@ -1,5 +1,10 @@
 #include "render/shadow_map_pass.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <glm/gtc/type_ptr.hpp>
 #include <vtkObjectFactory.h>
 #include <vtkOpaquePass.h>
 #include <vtkOpenGLFramebufferObject.h>
@@ -14,65 +19,251 @@
 namespace shadowlab {
 namespace {
 
-void to_floats(const glm::dmat4& m, float* out) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) out[4 * c + r] = static_cast<float>(m[c][r]);
+constexpr int kMaxMaps = ShadowMapPass::kMaxMaps;
+
+// A map's tile in texels of the texture: its first texel and its size, rounded as texel_of rounds
+// (maps/map_lookup.cpp), so that stage 1 draws exactly the texels stage 2 may read.
+struct Tile {
+    int x, y, width, height;
+};
+
+Tile tile_of(const ShadowMap& map, int resolution) {
+    const auto texel = [resolution](double t) { return static_cast<int>(std::lround(t * resolution)); };
+    const int x = texel(map.viewport.x), y = texel(map.viewport.y);
+    return {x, y, texel(map.viewport.z) - x, texel(map.viewport.w) - y};
 }
 
-// (u, v, d) in [0,1] to OpenGL clip space [-1,1]: x' = 2x - w, the same for y and z.
-glm::dmat4 uvz_to_clip() {
-    glm::dmat4 m(2.0);
-    m[3] = glm::dvec4(-1.0, -1.0, -1.0, 1.0);
-    return m;
+// The maps as the shaders' uniform arrays hold them: floats, matrices column-major, the entries
+// past the last map zero.
+struct MapArrays {
+    int projection[kMaxMaps]{};
+    glm::mat4 world_to_uvz[kMaxMaps]{};
+    glm::vec3 paraboloid_centre[kMaxMaps]{};
+    glm::mat4 paraboloid_frame[kMaxMaps]{};  // a mat3 in a mat4: vtkShaderProgram sets no mat3 arrays
+    float paraboloid_near[kMaxMaps]{};
+    float paraboloid_far[kMaxMaps]{};
+    int cube_face[kMaxMaps]{};
+    glm::vec4 viewport[kMaxMaps]{};
+    glm::vec4 tile_texels[kMaxMaps]{};  // first and last texel (x, y, x, y) of the tile
+    float z_bias_scale[kMaxMaps]{};
+};
+// The arrays go to OpenGL as packed floats.
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec4) == 4 * sizeof(float));
+static_assert(sizeof(glm::mat4) == 16 * sizeof(float));
+
+MapArrays map_arrays(const ShadowSetup& setup, int resolution) {
+    MapArrays a;
+    for (size_t i = 0; i < setup.maps.size(); ++i) {
+        const ShadowMap& map = setup.maps[i];
+        const Tile tile = tile_of(map, resolution);
+        a.projection[i] = static_cast<int>(map.projection);
+        a.world_to_uvz[i] = glm::mat4(map.world_to_uvz);
+        a.paraboloid_centre[i] = glm::vec3(map.paraboloid.centre);
+        a.paraboloid_frame[i] = glm::mat4(glm::mat3(map.paraboloid.frame_from_world));
+        a.paraboloid_near[i] = static_cast<float>(map.paraboloid.near);
+        a.paraboloid_far[i] = static_cast<float>(map.paraboloid.far);
+        a.cube_face[i] = map.cube_face;
+        a.viewport[i] = glm::vec4(map.viewport);
+        a.tile_texels[i] = glm::vec4(tile.x, tile.y, tile.x + tile.width - 1, tile.y + tile.height - 1);
+        a.z_bias_scale[i] = static_cast<float>(map.z_bias_scale);
+    }
+    return a;
 }
 
-// Declarations for the lookup. The slope-scaled bias is the CPU's (metrics/shadow_error.hpp,
-// slope_scaled_bias): the texel's world size across the light, 1 / (N σ_min(J)) with J = d(u, v)
-// per world unit across the light, times 1 + tan θ (clamped to 10), θ between the seen side's
-// normal and the light.
-constexpr const char* kLookupDeclarations = R"(//VTK::Light::Dec
+// Whether every uniform was found. The results come in as arguments, so that every uniform is set
+// even when one is missing (&& would stop at it).
+template <class... Found>
+bool all_set(Found... found) {
+    return (found && ...);
+}
+
+// Both stages: what map_homogeneous and hemisphere_side read. (The arrays are not const because
+// SetUniformMatrix4x4v takes a float*.)
+bool set_projection_uniforms(vtkShaderProgram* program, MapArrays& maps) {
+    return all_set(
+        program->SetUniform1iv("shadowMapProjection", kMaxMaps, maps.projection),
+        program->SetUniformMatrix4x4v("shadowMapWorldToUvz", kMaxMaps, glm::value_ptr(maps.world_to_uvz[0])),
+        program->SetUniform3fv("shadowMapParaboloidCentre", kMaxMaps, glm::value_ptr(maps.paraboloid_centre[0])),
+        program->SetUniformMatrix4x4v("shadowMapParaboloidFrame", kMaxMaps, glm::value_ptr(maps.paraboloid_frame[0])),
+        program->SetUniform1fv("shadowMapParaboloidNear", kMaxMaps, maps.paraboloid_near),
+        program->SetUniform1fv("shadowMapParaboloidFar", kMaxMaps, maps.paraboloid_far));
+}
+
+// Stage 2: the rest of select_map, look_up and texel_of.
+bool set_lookup_uniforms(vtkShaderProgram* program, MapArrays& maps, const ShadowSetup& setup) {
+    const MapSelection& s = setup.selection;
+    const size_t splits = std::min(s.split_depths.size(), setup.maps.size() + 1);  // as by_view_depth reads them
+    float split_depths[kMaxMaps + 1]{};
+    std::transform(s.split_depths.begin(), s.split_depths.begin() + splits, split_depths,
+                   [](double depth) { return static_cast<float>(depth); });
+    return all_set(program->SetUniformi("shadowMapCount", static_cast<int>(setup.maps.size())),
+                   program->SetUniform1iv("shadowMapCubeFace", kMaxMaps, maps.cube_face),
+                   program->SetUniform4fv("shadowMapViewport", kMaxMaps, glm::value_ptr(maps.viewport[0])),
+                   program->SetUniform4fv("shadowMapTileTexels", kMaxMaps, glm::value_ptr(maps.tile_texels[0])),
+                   program->SetUniform1fv("shadowMapZBiasScale", kMaxMaps, maps.z_bias_scale),
+                   program->SetUniformi("shadowSelectionRule", static_cast<int>(s.rule)),
+                   program->SetUniform3f("shadowSelectionEye", glm::value_ptr(s.eye)),
+                   program->SetUniform3f("shadowSelectionViewAxis", glm::value_ptr(s.view_axis)),
+                   program->SetUniform1fv("shadowSelectionSplitDepths", kMaxMaps + 1, split_depths),
+                   program->SetUniformi("shadowSelectionSplitCount", static_cast<int>(splits)),
+                   program->SetUniform3f("shadowSelectionCentre", glm::value_ptr(s.centre)));
+}
+
+// The constants the shaders share with C++, written from it so that neither side can drift: the
+// arrays' size and the values of Projection and MapSelection::Rule.
+std::string glsl_constants() {
+    const auto constant = [](const char* name, auto value) {
+        return "const int " + std::string(name) + " = " + std::to_string(static_cast<int>(value)) + ";\n";
+    };
+    using Rule = MapSelection::Rule;
+    return constant("shadowMaxMaps", kMaxMaps) + constant("shadowParaboloid", Projection::paraboloid) +
+           constant("shadowRuleOnly", Rule::only) + constant("shadowRuleViewDepth", Rule::view_depth) +
+           constant("shadowRuleTileBounds", Rule::tile_bounds) + constant("shadowRuleCubeFace", Rule::cube_face) +
+           constant("shadowRuleHemisphere", Rule::hemisphere);
+}
+
+// Both stages: each map's point before the division, map_homogeneous and hemisphere_side
+// (maps/map_lookup.cpp) line by line. A cube face is a linear map like any other.
+constexpr const char* kProjectionDeclarations = R"(
+uniform int shadowMapProjection[shadowMaxMaps];
+uniform mat4 shadowMapWorldToUvz[shadowMaxMaps];
+uniform vec3 shadowMapParaboloidCentre[shadowMaxMaps];
+uniform mat4 shadowMapParaboloidFrame[shadowMaxMaps];  // frame_from_world in the upper-left 3x3
+uniform float shadowMapParaboloidNear[shadowMaxMaps];
+uniform float shadowMapParaboloidFar[shadowMaxMaps];
+vec3 shadowInParaboloidFrame(int i, vec3 p) {
+  return mat3(shadowMapParaboloidFrame[i]) * (p - shadowMapParaboloidCentre[i]);
+}
+vec4 shadowParaboloidHomogeneous(int i, vec3 p) {
+  vec3 q = shadowInParaboloidFrame(i, p);
+  float dist = length(q);
+  if (!(dist > 0.0)) return vec4(0.0);
+  vec3 d = q / dist;
+  float denominator = 1.0 + d.z;
+  if (!(denominator > 1e-12)) return vec4(0.0);  // straight behind: the map's singular point
+  vec2 uv = (d.xy / denominator + 1.0) / 2.0;
+  float nearD = shadowMapParaboloidNear[i], farD = shadowMapParaboloidFar[i];
+  return vec4(uv, (dist - nearD) / (farD - nearD), 1.0);
+}
+vec4 shadowHomogeneous(int i, vec3 p) {
+  if (shadowMapProjection[i] == shadowParaboloid) return shadowParaboloidHomogeneous(i, p);
+  return shadowMapWorldToUvz[i] * vec4(p, 1.0);
+}
+float shadowHemisphereSide(int i, vec3 p) {
+  return shadowMapProjection[i] == shadowParaboloid ? shadowInParaboloidFrame(i, p).z : 1.0;
+}
+)";
+
+// Stage 1: the drawn map's (u, v, d) in [0,1] to OpenGL clip space [-1,1] (x' = 2x - w, the same
+// for y and z), and the distance to its hemisphere plane, which clips a paraboloid's casters where
+// the CPU rasterizer cuts them (GL_CLIP_DISTANCE0 is on for paraboloids only).
+constexpr const char* kDepthPosition = R"(vec4 shadowH = shadowHomogeneous(shadowDrawnMap, vertexMC.xyz);
+  gl_Position = vec4(2.0 * shadowH.xyz - shadowH.w, shadowH.w);
+  gl_ClipDistance[0] = shadowHemisphereSide(shadowDrawnMap, vertexMC.xyz);)";
+
+// Stage 2, after the projections: select_map, look_up and texel_of (maps/map_lookup.cpp) line by
+// line. The slope-scaled bias is the CPU's (metrics/shadow_error.cpp, slope_scaled_bias) under the
+// selected map: the texel's world size across the light, 1 / (N σ_min(J)) with N the tile's texels
+// per side and J = d(u, v) per world unit across the light, times 1 + tan θ (clamped to 10), θ
+// between the seen side's normal and the light.
+constexpr const char* kLookupDeclarations = R"(
+uniform int shadowMapCount;
+uniform int shadowMapCubeFace[shadowMaxMaps];
+uniform vec4 shadowMapViewport[shadowMaxMaps];    // (u0, v0, u1, v1): the tile in the texture
+uniform vec4 shadowMapTileTexels[shadowMaxMaps];  // first and last texel (x, y, x, y) of the tile
+uniform float shadowMapZBiasScale[shadowMaxMaps];
+uniform int shadowSelectionRule;
+uniform vec3 shadowSelectionEye;
+uniform vec3 shadowSelectionViewAxis;
+uniform float shadowSelectionSplitDepths[shadowMaxMaps + 1];
+uniform int shadowSelectionSplitCount;
+uniform vec3 shadowSelectionCentre;
 uniform sampler2D shadowDepth;
-uniform mat4 shadowWorldToUvz;
 uniform vec4 shadowLight;  // (direction, 0) for a directional light, (position, 1) otherwise
 uniform vec3 shadowEye;
 uniform float shadowBias;  // world units along the light; < 0: slope-scaled per fragment
-uniform float shadowZBiasScale;
 uniform int shadowResolution;
 uniform int shadowLitMask;
 in vec4 shadowWorldVSOutput;
+bool shadowInUnitRange(float t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
+bool shadowOnMap(vec4 h) { return h.w > 0.0 && shadowInUnitRange(h.x / h.w) && shadowInUnitRange(h.y / h.w); }
+// 0..5 for +x, -x, +y, -y, +z, -z: the major axis of r (x, then y, on ties) and its sign.
+int shadowMajorAxisFace(vec3 r) {
+  vec3 a = abs(r);
+  int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+  return 2 * axis + (r[axis] < 0.0 ? 1 : 0);
+}
+// Map i serves view depths in [split i, split i + 1), the last split included.
+int shadowByViewDepth(vec3 p) {
+  float depth = dot(p - shadowSelectionEye, shadowSelectionViewAxis);
+  for (int i = 0; i + 1 < shadowSelectionSplitCount; ++i)
+    if (depth >= shadowSelectionSplitDepths[i] &&
+        (depth < shadowSelectionSplitDepths[i + 1] ||
+         (i + 2 == shadowSelectionSplitCount && depth == shadowSelectionSplitDepths[i + 1])))
+      return i;
+  return -1;
+}
+// Whether map i holds p under the rules that take the first map holding it.
+bool shadowHolds(int i, vec3 p) {
+  if (shadowSelectionRule == shadowRuleTileBounds) return shadowOnMap(shadowHomogeneous(i, p));
+  if (shadowSelectionRule == shadowRuleCubeFace)
+    return shadowMapCubeFace[i] == shadowMajorAxisFace(p - shadowSelectionCentre);
+  return shadowSelectionRule == shadowRuleHemisphere && shadowHemisphereSide(i, p) >= 0.0;
+}
+int shadowSelectMap(vec3 p) {
+  if (shadowMapCount == 0) return -1;
+  if (shadowSelectionRule == shadowRuleOnly) return 0;
+  if (shadowSelectionRule == shadowRuleViewDepth) return shadowByViewDepth(p);
+  for (int i = 0; i < shadowMapCount; ++i)
+    if (shadowHolds(i, p)) return i;
+  return -1;
+}
+// The texel map i's (u, v) reads: the nearest, kept in the map's tile.
+ivec2 shadowTexelOf(int i, vec2 uv) {
+  vec4 tile = shadowMapViewport[i];
+  vec2 t = (tile.xy + uv * (tile.zw - tile.xy)) * float(shadowResolution);
+  return ivec2(clamp(floor(t), shadowMapTileTexels[i].xy, shadowMapTileTexels[i].zw));
+}
 vec3 shadowAlongLight(vec3 p) { return shadowLight.w == 0.0 ? shadowLight.xyz : normalize(p - shadowLight.xyz); }
-vec2 shadowUv(vec3 p) { vec4 h = shadowWorldToUvz * vec4(p, 1.0); return h.xy / h.w; }
-float shadowSlopeScaledBias(vec3 p) {
+// The normal of the side the camera sees. From derivatives, which are only defined in uniform
+// control flow: called before the lookup branches.
+vec3 shadowSeenNormal(vec3 p) {
+  vec3 n = normalize(cross(dFdx(p), dFdy(p)));
+  return dot(n, shadowEye - p) < 0.0 ? -n : n;
+}
+vec2 shadowUv(int i, vec3 p) { vec4 h = shadowHomogeneous(i, p); return h.xy / h.w; }
+float shadowSlopeScaledBias(int i, vec3 p, vec3 n) {
   vec3 l = shadowAlongLight(p);
   vec3 a = normalize(cross(l, abs(l.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
   vec3 b = cross(l, a);
   float h = 1e-3 * (1.0 + length(p));
-  vec2 uv = shadowUv(p);
-  vec2 ja = (shadowUv(p + h * a) - uv) / h, jb = (shadowUv(p + h * b) - uv) / h;
+  vec2 uv = shadowUv(i, p);
+  vec2 ja = (shadowUv(i, p + h * a) - uv) / h, jb = (shadowUv(i, p + h * b) - uv) / h;
   float t = dot(ja, ja) + dot(jb, jb), d = ja.x * jb.y - ja.y * jb.x;
   float smallest = 0.5 * (t - sqrt(max(t * t - 4.0 * d * d, 0.0)));  // σ_min²
-  float texel = 1.0 / (float(shadowResolution) * sqrt(max(smallest, 1e-30)));
-  vec3 n = normalize(cross(dFdx(p), dFdy(p)));
-  if (dot(n, shadowEye - p) < 0.0) n = -n;  // the side the camera sees
+  float texels = (shadowMapViewport[i].z - shadowMapViewport[i].x) * float(shadowResolution);  // tile_resolution
+  float texel = 1.0 / (texels * sqrt(max(smallest, 1e-30)));
   float c = dot(n, -l);
   float tanTheta = min(10.0, sqrt(max(0.0, 1.0 - c * c)) / max(c, 1e-6));
   return texel * (1.0 + tanTheta);
 }
 )";
 
-// The lookup, after VTK's lighting: the nearest texel's depth against the fragment's, biased
-// before the division by w; outside the map or behind its projection centre counts as lit.
+// The lookup, after VTK's lighting: the nearest texel of the selected map's tile against the
+// fragment's depth, biased before the division by w; no map, or off the map or behind its centre,
+// counts as lit.
 constexpr const char* kLookup = R"(//VTK::Light::Impl
   {
     float lit = 1.0;
     vec3 p = shadowWorldVSOutput.xyz;
-    vec4 sc = shadowWorldToUvz * vec4(p, 1.0);
-    float bias = shadowBias >= 0.0 ? shadowBias : shadowSlopeScaledBias(p);
-    if (sc.w > 0.0) {
-      vec3 uvz = vec3(sc.xy, sc.z - shadowZBiasScale * bias) / sc.w;
-      if (all(greaterThanEqual(uvz.xy, vec2(0.0))) && all(lessThanEqual(uvz.xy, vec2(1.0)))) {
-        vec2 texel = (floor(uvz.xy * float(shadowResolution)) + 0.5) / float(shadowResolution);
-        lit = uvz.z > texture(shadowDepth, texel).r ? 0.0 : 1.0;
+    vec3 n = shadowSeenNormal(p);
+    int i = shadowSelectMap(p);
+    if (i >= 0) {
+      vec4 h = shadowHomogeneous(i, p);
+      if (shadowOnMap(h)) {
+        float bias = shadowBias >= 0.0 ? shadowBias : shadowSlopeScaledBias(i, p, n);
+        float depth = (h.z - shadowMapZBiasScale[i] * bias) / h.w;
+        lit = depth > texelFetch(shadowDepth, shadowTexelOf(i, h.xy / h.w), 0).r ? 0.0 : 1.0;
       }
     }
     if (shadowLitMask == 1) gl_FragData[0] = vec4(vec3(lit), 1.0);
@@ -84,14 +275,15 @@ constexpr const char* kLookup = R"(//VTK::Light::Impl
 
 vtkStandardNewMacro(ShadowMapPass);
 
-ShadowMapPass::ShadowMapPass() : depth_pass_(vtkSmartPointer<vtkOpaquePass>::New()) { SetMap(glm::dmat4(1.0), 1.0, 1024); }
+ShadowMapPass::ShadowMapPass() : depth_pass_(vtkSmartPointer<vtkOpaquePass>::New()) {}
 
 ShadowMapPass::~ShadowMapPass() = default;
 
-void ShadowMapPass::SetMap(const glm::dmat4& world_to_uvz, double z_bias_scale, int resolution) {
-    to_floats(world_to_uvz, world_to_uvz_);
-    to_floats(uvz_to_clip() * world_to_uvz, world_to_clip_);
-    z_bias_scale_ = static_cast<float>(z_bias_scale);
+void ShadowMapPass::SetSetup(const ShadowSetup& setup, int resolution) {
+    if (setup.maps.size() > static_cast<size_t>(kMaxMaps))
+        throw std::invalid_argument("ShadowMapPass: the setup has " + std::to_string(setup.maps.size()) +
+                                    " maps; the GPU pass holds at most " + std::to_string(kMaxMaps));
+    setup_ = setup;
     resolution_ = resolution;
     Modified();
 }
@@ -148,21 +340,23 @@ void ShadowMapPass::prepare_targets(vtkOpenGLRenderWindow* window) {
     fbo_->SetContext(window);
 }
 
-// Stage 1: the casters' depth under world_to_uvz.
+// Stage 1: the casters' depth, each map into its own tile of the texture, cleared to 1 (nothing
+// cast) once for all of them.
 void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
     vtkOpenGLState* gl = window->GetState();
     vtkOpenGLState::ScopedglViewport viewport(gl);
+    vtkOpenGLState::ScopedglScissor scissor_box(gl);
     vtkOpenGLState::ScopedglEnableDisable scissor(gl, GL_SCISSOR_TEST);
     gl->PushFramebufferBindings();
     fbo_->Bind();
     fbo_->AddColorAttachment(0, colour_);
     fbo_->AddDepthAttachment(depth_);
     fbo_->ActivateDrawBuffer(0);
-    gl->vtkglDisable(GL_SCISSOR_TEST);
-    gl->vtkglViewport(0, 0, resolution_, resolution_);
+    gl->vtkglDisable(GL_SCISSOR_TEST);  // the clear covers the whole texture
     gl->vtkglDepthMask(GL_TRUE);
     gl->vtkglClearDepth(1.0);
     gl->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    gl->vtkglEnable(GL_SCISSOR_TEST);  // a tile's casters stay in it, whatever the rasterizer's guard band
     gl->vtkglEnable(GL_DEPTH_TEST);
     gl->vtkglDepthFunc(GL_LEQUAL);
     glEnable(GL_DEPTH_CLAMP);
@@ -172,14 +366,28 @@ void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow*
     depth_state.SetPropArrayAndCount(casters_.data(), static_cast<int>(casters_.size()));
     depth_state.SetFrameBuffer(fbo_);
     PreRender(&depth_state);
-    depth_pass_->Render(&depth_state);
+    for (int map = 0; map < static_cast<int>(setup_.maps.size()); ++map) render_map_depth(&depth_state, gl, map);
     PostRender(&depth_state);
 
     glDisable(GL_DEPTH_CLAMP);
     gl->PopFramebufferBindings();
 }
 
-// Stage 2: the scene, each fragment looked up in the map.
+// One map's casters into its tile. Every map draws with the same shader source, so nothing is
+// rebuilt: the mappers call SetShaderParameters before each draw, which sends drawn_map_.
+void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map) {
+    const Tile tile = tile_of(setup_.maps[map], resolution_);
+    if (tile.width <= 0 || tile.height <= 0) return;  // a tile without texels: nothing to draw
+    gl->vtkglViewport(tile.x, tile.y, tile.width, tile.height);
+    gl->vtkglScissor(tile.x, tile.y, tile.width, tile.height);
+    drawn_map_ = map;
+    const bool paraboloid = setup_.maps[map].projection == Projection::paraboloid;
+    if (paraboloid) glEnable(GL_CLIP_DISTANCE0);  // behind the hemisphere: cut, as the CPU rasterizer does
+    depth_pass_->Render(depth_state);
+    if (paraboloid) glDisable(GL_CLIP_DISTANCE0);
+}
+
+// Stage 2: the scene, each fragment looked up in its map.
 void ShadowMapPass::render_shaded(const vtkRenderState* s) {
     if (!shade_) return;
     enter(Stage::shade);
@@ -193,16 +401,18 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
 
 bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment,
                                            vtkAbstractMapper*, vtkProp*) {
+    const std::string projection = glsl_constants() + kProjectionDeclarations;
     if (stage_ == Stage::depth) {
         vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
-                                     "//VTK::PositionVC::Dec\nuniform mat4 shadowWorldToClip;\n", false);
+                                     "//VTK::PositionVC::Dec\n" + projection + "uniform int shadowDrawnMap;\n", false);
         return true;
     }
     vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec", "//VTK::PositionVC::Dec\nout vec4 shadowWorldVSOutput;\n",
                                  false);
     vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Impl",
                                  "//VTK::PositionVC::Impl\n  shadowWorldVSOutput = vertexMC;\n", false);
-    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", kLookupDeclarations, false);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec",
+                                 "//VTK::Light::Dec\n" + projection + kLookupDeclarations, false);
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", kLookup, false);
     return true;
 }
@@ -211,23 +421,20 @@ bool ShadowMapPass::PostReplaceShaderValues(std::string& vertex, std::string&, s
                                             vtkProp*) {
     // Our actors hold world coordinates (identity model matrix, no VBO shift): MC is world.
     if (stage_ == Stage::depth)
-        vtkShaderProgram::Substitute(vertex, "gl_Position = MCDCMatrix * vertexMC;",
-                                     "gl_Position = shadowWorldToClip * vertexMC;", true);
+        vtkShaderProgram::Substitute(vertex, "gl_Position = MCDCMatrix * vertexMC;", kDepthPosition, true);
     return true;
 }
 
 bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*,
                                         vtkOpenGLVertexArrayObject*) {
-    if (stage_ == Stage::depth) return program->SetUniformMatrix4x4("shadowWorldToClip", world_to_clip_);
-    program->SetUniformMatrix4x4("shadowWorldToUvz", world_to_uvz_);
-    program->SetUniformi("shadowDepth", depth_->GetTextureUnit());
-    program->SetUniform4f("shadowLight", light_);
-    program->SetUniform3f("shadowEye", eye_);
-    program->SetUniformf("shadowBias", bias_);
-    program->SetUniformf("shadowZBiasScale", z_bias_scale_);
-    program->SetUniformi("shadowResolution", resolution_);
-    program->SetUniformi("shadowLitMask", output_ == Output::lit_mask ? 1 : 0);
-    return true;
+    MapArrays maps = map_arrays(setup_, resolution_);
+    if (stage_ == Stage::depth)
+        return all_set(set_projection_uniforms(program, maps), program->SetUniformi("shadowDrawnMap", drawn_map_));
+    return all_set(set_projection_uniforms(program, maps), set_lookup_uniforms(program, maps, setup_),
+                   program->SetUniformi("shadowDepth", depth_->GetTextureUnit()),
+                   program->SetUniform4f("shadowLight", light_), program->SetUniform3f("shadowEye", eye_),
+                   program->SetUniformf("shadowBias", bias_), program->SetUniformi("shadowResolution", resolution_),
+                   program->SetUniformi("shadowLitMask", output_ == Output::lit_mask ? 1 : 0));
 }
 
 void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {

@@ -1,20 +1,25 @@
 #pragma once
-// Shadow mapping with a method's own map: any world_to_uvz, perspective warps included. Our own
-// render pass, because vtkShadowMapPass fixes its own light camera.
+// Shadow mapping with a method's own maps: any number of them (up to kMaxMaps), each linear (any
+// world_to_uvz, perspective warps included), a paraboloid hemisphere or a cube face, each in its
+// tile of one depth texture. Our own render pass, because vtkShadowMapPass fixes its own light camera.
 //
-// Stage 1 renders the casters' depth into an FBO depth texture with gl_Position = clip(world_to_uvz)
-// (depth clamped, as the CPU rasterizer clamps casters before the near plane). Stage 2 renders the
-// scene through `shade` (normally a vtkRenderStepsPass) and looks each fragment up in that texture,
-// the method's z bias applied before the division by w (XPSM step 18): constant, or slope-scaled
-// per fragment exactly as the CPU metrics compute it.
+// Stage 1 renders the casters' depth into an FBO depth texture, once per map into that map's tile
+// (depth clamped, as the CPU rasterizer clamps casters before the near plane; a paraboloid clipped
+// to its hemisphere). Stage 2 renders the scene through `shade` (normally a vtkRenderStepsPass) and
+// looks each fragment up as maps/map_lookup.cpp does: the setup's rule picks the map, the method's z
+// bias is applied before the division by w (XPSM step 18), constant or slope-scaled per fragment
+// exactly as the CPU metrics compute it, and the nearest texel of the map's tile is compared.
 #include <vector>
 #include <glm/glm.hpp>
 #include <vtkOpenGLRenderPass.h>
 #include <vtkSmartPointer.h>
 
+#include "maps/shadow_map.hpp"
+
 class vtkOpaquePass;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkProp;
 class vtkTextureObject;
 
@@ -25,15 +30,18 @@ public:
     static ShadowMapPass* New();
     vtkTypeMacro(ShadowMapPass, vtkOpenGLRenderPass);
 
+    static constexpr int kMaxMaps = 8;  // the shaders' uniform arrays hold this many maps
+
     // What stage 2 writes: the lit colour dimmed in shadow, or white where lit and black where shadowed.
     enum class Output { shaded, lit_mask };
 
-    // The map and its z_bias_scale (depth per world unit along the light, before the division).
-    void SetMap(const glm::dmat4& world_to_uvz, double z_bias_scale, int resolution);
+    // The maps, their tiles and the rule that picks one per point; resolution: texels per side of
+    // the whole texture. Throws std::invalid_argument for more than kMaxMaps maps.
+    void SetSetup(const ShadowSetup& setup, int resolution);
     // bias: world units along the light, or < 0 for the slope-scaled bias per fragment (as the CPU
     // metrics use). light: (direction it travels, 0) or (position, 1); eye: the camera's position.
     void SetBias(double bias, const glm::dvec4& light, const glm::dvec3& eye);
-    void SetCasters(const std::vector<vtkProp*>& casters);  // the props drawn into the map
+    void SetCasters(const std::vector<vtkProp*>& casters);  // the props drawn into the maps
     void SetShadePass(vtkRenderPass* shade);
     void SetOutput(Output output);
 
@@ -56,14 +64,14 @@ private:
     void enter(Stage stage);
     void prepare_targets(vtkOpenGLRenderWindow* window);
     void render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+    void render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map);
     void render_shaded(const vtkRenderState* s);
 
     Stage stage_ = Stage::shade;
     vtkTimeStamp stage_time_;
     Output output_ = Output::shaded;
-    float world_to_uvz_[16] = {};  // column-major, as GLSL reads it
-    float world_to_clip_[16] = {};
-    float z_bias_scale_ = 1.0f;
+    ShadowSetup setup_;   // no maps until SetSetup: everything lit
+    int drawn_map_ = 0;   // stage 1: the map whose tile is being drawn
     float bias_ = -1.0f;
     float light_[4] = {0.0f, -1.0f, 0.0f, 0.0f};
     float eye_[3] = {};

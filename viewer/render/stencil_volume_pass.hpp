@@ -15,7 +15,7 @@
 #include <vtkRenderPass.h>
 #include <vtkSmartPointer.h>
 
-#include "model/technique_inspection.hpp"
+#include "techniques/geometry_result.hpp"
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;

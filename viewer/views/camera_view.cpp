@@ -37,7 +37,7 @@ void add_scene_light(vtkRenderer* renderer, const Light& light) {
 
 void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options, vtkActor* casters) {
     vtkNew<ShadowMapPass> pass;
-    pass->SetMap(in.map().world_to_uvz, in.map().z_bias_scale, in.resolution);
+    pass->SetSetup(in.setup, in.resolution);
     const Light& light = in.scene.light;
     pass->SetBias(in.bias, light.is_directional() ? glm::dvec4(light.direction, 0.0) : glm::dvec4(light.position, 1.0),
                   in.scene.camera.position);
@@ -47,7 +47,7 @@ void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOpt
     renderer->SetPass(pass);
 }
 
-void install_stencil_pass(vtkRenderer* renderer, const TechniqueInspection& technique, const ViewOptions& options) {
+void install_stencil_pass(vtkRenderer* renderer, const GeometryResult& technique, const ViewOptions& options) {
     vtkNew<StencilVolumePass> pass;
     pass->SetPolygons(technique.stencil, technique.rule);
     pass->SetScenePass(vtkNew<vtkRenderStepsPass>());
@@ -78,7 +78,7 @@ ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const 
     if (in.has_map())
         install_map_pass(renderer, in, options, casters);
     else
-        install_stencil_pass(renderer, *in.technique, options);
+        install_stencil_pass(renderer, *in.geometry, options);
     if (options.lit_mask) renderer->SetBackground(1.0, 0.0, 0.0);  // nothing visible: red, neither lit nor shadowed
     return {};
 }

@@ -1,7 +1,7 @@
 // The Error view: the camera image measured against the exact reference. Misclassified pixels are
 // painted by kind: false shadow (acne) magenta, false light (leaks) green. For a map the other
-// receiver pixels show Lloyd's m as a heat map (log scale, 1/8 to 8 texel-pixels), the bias
-// slope-scaled per pixel as `shadowlab measure` uses by default; a geometric technique has no
+// receiver pixels show Lloyd's m as a heat map (log scale, 1/8 to 8 texel-pixels), judged with the
+// inspection's bias (slope-scaled per pixel unless a constant was chosen); a geometric technique has no
 // texels, so its agreeing pixels are light grey where lit and dark grey where shadowed.
 #include <algorithm>
 #include <array>
@@ -49,19 +49,18 @@ std::string shares(const ShadowError& e) {
 
 ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
     renderer->SetBackground(0.12, 0.13, 0.16);
-    if (!in.has_map()) {  // judged on the image the technique ran on
-        const ReferenceImage& seen = in.technique->image;
-        const ReferenceImage ref = exact_reference(in.scene, in.triangles, seen.width, seen.height);
-        const ShadowError e = judge_shadows(in.scene, ref, in.technique->result.shadowed);
-        show_image(renderer, paint(e, ref, false));
+    // A technique is judged on the image it ran on; a map on an image of the panel's size.
+    const int width = !in.has_map() ? in.image_width : options.width > 0 ? options.width : 640;
+    const int height = !in.has_map()        ? in.image_height
+                       : options.height > 0 ? options.height
+                                            : std::max(1, static_cast<int>(std::lround(width / in.scene.camera.aspect)));
+    const ReferenceImage& ref = in.reference(width, height);
+    const ShadowError& e = in.error(width, height);
+    show_image(renderer, paint(e, ref, in.has_map()));
+    if (!in.has_map()) {
         add_caption(renderer, "Error — " + in.name() + ": " + shares(e) + "; agreeing pixels grey (light: lit)");
         return {};
     }
-    const int width = options.width > 0 ? options.width : 640;
-    const int height = options.height > 0 ? options.height : std::max(1, static_cast<int>(std::lround(width / in.scene.camera.aspect)));
-    const ReferenceImage ref = exact_reference(in.scene, in.triangles, width, height);
-    const ShadowError e = measure_shadow_error(in.scene, ref, in.depth, in.map(), -1.0);
-    show_image(renderer, paint(e, ref, true));
     char aliasing[96];
     std::snprintf(aliasing, sizeof aliasing, "; m max %.2f, p95 %.2f (heat: m from 1/8 to 8)", e.m.max, e.m.p95);
     add_caption(renderer, "Error — " + in.name() + " " + std::to_string(in.resolution) + "²: " + shares(e) + aliasing);

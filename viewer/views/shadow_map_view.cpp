@@ -53,6 +53,17 @@ public:
     }
 };
 
+// World -> image pixels of the texture for one map: its texel (x, y) is centred at pixel (x, y) of
+// the image actor, its tile where the viewport puts it; drawn just above the image.
+glm::dmat4 pixels_from_world(const ShadowMap& map, int n) {
+    glm::dmat4 pixels_from_uvz(1.0);
+    pixels_from_uvz[0][0] = (map.viewport.z - map.viewport.x) * n;
+    pixels_from_uvz[1][1] = (map.viewport.w - map.viewport.y) * n;
+    pixels_from_uvz[2][2] = 0.0;
+    pixels_from_uvz[3] = glm::dvec4(map.viewport.x * n - 0.5, map.viewport.y * n - 0.5, 1.0, 1.0);
+    return pixels_from_uvz * map.world_to_uvz;
+}
+
 }  // namespace
 
 ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
@@ -62,23 +73,25 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
         add_caption(renderer, in.title() + ": no shadow map (a geometric technique; see the Stencil count view)");
         return {};
     }
+    ViewReport report;
     show_image(renderer, depth_to_grey(in.depth));
-    // World -> image pixels: texel (x, y) is centred at pixel (x, y) of the image actor.
-    glm::dmat4 to_pixels(1.0);
-    to_pixels[0][0] = to_pixels[1][1] = n;
-    to_pixels[3] = glm::dvec4(-0.5, -0.5, 0.0, 1.0);
-    to_pixels[2][2] = 0.0;
-    to_pixels[3][2] = 1.0;  // drawn just above the image
-    auto frustum = actor_for(geometry_polydata(in.inputs.frustum, to_pixels * in.map().world_to_uvz), glm::dvec3(1.0, 0.85, 0.1));
-    frustum->GetProperty()->SetLineWidth(2.0f);
-    renderer->AddActor(frustum);
+    for (const ShadowMap& map : in.setup.maps) {  // the camera frustum where each linear map puts it
+        if (map.projection == Projection::paraboloid) {
+            report.notes.push_back("the camera frustum is not drawn on a paraboloid map (its edges bend)");
+            continue;
+        }
+        auto frustum = actor_for(geometry_polydata(in.inputs.frustum, pixels_from_world(map, n)), glm::dvec3(1.0, 0.85, 0.1));
+        frustum->GetProperty()->SetLineWidth(2.0f);
+        renderer->AddActor(frustum);
+    }
     vtkNew<TexelGridToggle> toggle;
     toggle->grid = actor_for(texel_grid(n), glm::dvec3(0.35, 0.55, 0.85));
     renderer->AddActor(toggle->grid);
     renderer->AddObserver(vtkCommand::StartEvent, toggle);
-    add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.name() +
+    const std::string maps = in.setup.maps.size() > 1 ? ", " + std::to_string(in.setup.maps.size()) + " maps in tiles" : "";
+    add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.name() + maps +
                               " (camera frustum in yellow; texel grid when zoomed in)");
-    return {};
+    return report;
 }
 
 }  // namespace shadowlab

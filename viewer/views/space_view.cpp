@@ -31,8 +31,8 @@ std::optional<glm::dmat4> frame(const Inspection& in, Space space) {
     return in.trace.frame(space);
 }
 
-// The cube [0,1]^3 of the map, back in world space: the volume the map covers.
-Frustum map_volume(const ShadowMap& map) {
+// A linear map's volume: its cube [0,1]^3 carried back to the world (paraboloids have none).
+Frustum linear_map_volume(const ShadowMap& map) {
     const glm::dmat4 inverse = glm::inverse(map.world_to_uvz);
     Frustum f{};
     const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -80,16 +80,24 @@ void add_steps(vtkRenderer* renderer, const Inspection& in, const glm::dmat4& to
     }
 }
 
+// Every linear map's volume (a cascade's maps side by side); a paraboloid's is named instead.
+void add_map_volumes(vtkRenderer* renderer, const ShadowSetup& setup, const glm::dmat4& to_view, ViewReport& report) {
+    for (const ShadowMap& map : setup.maps)
+        if (map.projection == Projection::paraboloid)
+            report.notes.push_back("a paraboloid map has no box-shaped volume: not drawn");
+        else
+            add(renderer, geometry_polydata(linear_map_volume(map), to_view), kMapVolume, 2.0);
+}
+
 // Caster and receiver box corners: those the map leaves outside [0,1]^3 in their own colour.
 // Returns how many were left out.
 size_t add_input_points(vtkRenderer* renderer, const Inspection& in, const glm::dmat4& to_view) {
     std::vector<glm::dvec3> inside, left_out;
     for (const auto& points : {in.inputs.caster_points(), in.inputs.receiver_points()})
         for (const glm::dvec3& p : points) {
-            const glm::dvec4 h = in.map().world_to_uvz * glm::dvec4(p, 1.0);
-            const glm::dvec3 uvz = glm::dvec3(h) / h.w;
-            const bool covered = h.w > 0.0 && glm::all(glm::greaterThanEqual(uvz, glm::dvec3(-1e-6))) &&
-                                 glm::all(glm::lessThanEqual(uvz, glm::dvec3(1.0 + 1e-6)));
+            const std::optional<MapPoint> at = map_point(in.setup, p);
+            const bool covered = at && glm::all(glm::greaterThanEqual(at->uvz(), glm::dvec3(-1e-6))) &&
+                                 glm::all(glm::lessThanEqual(at->uvz(), glm::dvec3(1.0 + 1e-6)));
             (covered ? inside : left_out).push_back(p);
         }
     add(renderer, points_polydata(inside, to_view), kFrustum, 1.5);
@@ -110,13 +118,6 @@ void add_light(vtkRenderer* renderer, const Scene& scene) {
 
 void add_boxes(vtkRenderer* renderer, const std::vector<Aabb>& boxes, const glm::dmat4& to_view, const glm::dvec3& colour) {
     for (const Aabb& box : boxes) add(renderer, geometry_polydata(box, to_view), colour, 1.0, 0.6);
-}
-
-// The casters' boxes together: where a technique's silhouettes and volumes start.
-Aabb casters_region(const Inspection& in) {
-    Aabb box;
-    for (const Aabb& caster : in.inputs.casters) box.extend(caster);
-    return box.empty() ? in.scene.bounds() : box;
 }
 
 // What the camera frames: the scene in the world; in the light spaces the intersection body (what
@@ -175,7 +176,7 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKin
     add(renderer, scene, glm::dvec3(1.0), 1.0, view == ViewKind::world ? 1.0 : 0.35);
     if (scene.dropped) report.notes.push_back(std::to_string(scene.dropped) + " scene triangles at or behind w = 0 not drawn");
     add(renderer, geometry_polydata(in.inputs.frustum, *to_view), kFrustum, 2.0);
-    if (in.has_map()) add(renderer, geometry_polydata(map_volume(in.map()), *to_view), kMapVolume, 2.0);
+    if (in.has_map()) add_map_volumes(renderer, in.setup, *to_view, report);
     if (view == ViewKind::world) {
         add_boxes(renderer, in.inputs.casters, *to_view, kCasterBox);
         add_boxes(renderer, in.inputs.receivers, *to_view, kReceiverBox);

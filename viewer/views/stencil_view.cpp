@@ -34,10 +34,10 @@ struct Counts {
     size_t disagree = 0;
 };
 
-Counts counts_of(const TechniqueInspection& t) {
+Counts counts_of(const GeometryResult& t) {
     Counts out;
     if (!t.counts) {
-        out.count.assign(t.result.shadowed.begin(), t.result.shadowed.end());
+        out.count.assign(t.shadowed.begin(), t.shadowed.end());
         return out;
     }
     out.count = t.rule == StencilRule::zpass ? t.counts->zpass : t.counts->zfail;
@@ -53,20 +53,21 @@ const char* rule_name(StencilRule rule) {
 
 ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in) {
     renderer->SetBackground(0.12, 0.13, 0.16);
-    if (!in.technique) {
+    if (in.has_map()) {
         add_caption(renderer, in.title() + ": no stencil count (a shadow map; see the Shadow map view)");
         return {};
     }
-    const TechniqueInspection& t = *in.technique;
+    const GeometryResult& t = *in.geometry;
+    const ReferenceImage& seen = in.reference(in.image_width, in.image_height);  // the image it was judged on
     const Counts c = counts_of(t);
     int largest = 1, shadowed = 0;
     for (size_t i = 0; i < c.count.size(); ++i) {
         largest = std::max(largest, c.count[i]);
-        shadowed += t.image.visible[i] && c.count[i] != 0;
+        shadowed += seen.visible[i] && c.count[i] != 0;
     }
-    RgbImage image(t.image.width, t.image.height);
+    RgbImage image(seen.width, seen.height);
     for (size_t i = 0; i < c.count.size(); ++i) {
-        const Rgb colour = count_colour(c.count[i], largest, t.image, i);
+        const Rgb colour = count_colour(c.count[i], largest, seen, i);
         std::copy(colour.begin(), colour.end(), image.rgb.begin() + 3 * i);
     }
     show_image(renderer, image);
@@ -74,7 +75,7 @@ ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in) {
     std::snprintf(caption, sizeof caption,
                   "Stencil count — %s, %s (CPU, %dx%d): %d pixels shadowed; z-pass and z-fail differ at %zu pixels\n"
                   "0 grey (lit), 1..%d warm, negative blue (z-pass with the eye inside a volume)",
-                  in.name().c_str(), rule_name(t.rule), t.image.width, t.image.height, shadowed, c.disagree, largest);
+                  in.name().c_str(), rule_name(t.rule), seen.width, seen.height, shadowed, c.disagree, largest);
     add_caption(renderer, caption);
     return {};
 }

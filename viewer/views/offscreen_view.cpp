@@ -1,8 +1,7 @@
-#include "render/offscreen_view.hpp"
+#include "views/offscreen_view.hpp"
 
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkWindowToImageFilter.h>
 
 #include "render/x_display.hpp"
 
@@ -27,15 +26,6 @@ RgbImage render_view(const Inspection& inspection, ViewKind view, const ViewOpti
     RgbImage image = grab(window);
     window->Finalize();
     return image;
-}
-
-RgbImage grab(vtkRenderWindow* window) {
-    vtkNew<vtkWindowToImageFilter> filter;
-    filter->SetInput(window);
-    filter->SetInputBufferTypeToRGB();
-    filter->ReadFrontBufferOff();
-    filter->Update();
-    return from_vtk_image(filter->GetOutput());
 }
 
 }  // namespace shadowlab

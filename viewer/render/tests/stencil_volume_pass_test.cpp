@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "model/camera_in_shadow.hpp"
-#include "render/offscreen_view.hpp"
 #include "scene/scene_loader.hpp"
 #include "view_test_support.hpp"
+#include "views/offscreen_view.hpp"
 
 using namespace shadowlab;
 using namespace shadowlab::testing;
@@ -32,11 +32,11 @@ RgbImage lit_mask(const Inspection& in) {
 
 // The GPU lit mask against the CPU technique's `shadowed`, away from shadow edges.
 Agreement gpu_against_cpu(const Inspection& in) {
-    const TechniqueInspection& t = *in.technique;
-    std::vector<int8_t> cpu(t.image.visible.size(), -1);
+    const ReferenceImage& image = in.reference(in.image_width, in.image_height);  // the image it judged
+    std::vector<int8_t> cpu(image.visible.size(), -1);
     for (size_t i = 0; i < cpu.size(); ++i)
-        if (t.image.visible[i]) cpu[i] = t.result.shadowed[i] ? 0 : 1;
-    return agreement(lit_mask(in), cpu, t.image);
+        if (image.visible[i]) cpu[i] = in.geometry->shadowed[i] ? 0 : 1;
+    return agreement(lit_mask(in), cpu, image);
 }
 
 double differing_share(const RgbImage& a, const RgbImage& b) {

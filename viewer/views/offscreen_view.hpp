@@ -3,14 +3,9 @@
 #include "render/rgb_image.hpp"
 #include "views/view.hpp"
 
-class vtkRenderWindow;
-
 namespace shadowlab {
 
 // Throws std::runtime_error without an X display, std::invalid_argument for an unknown step.
 RgbImage render_view(const Inspection& inspection, ViewKind view, const ViewOptions& options, int width, int height);
-
-// What a render window shows now (its back buffer).
-RgbImage grab(vtkRenderWindow* window);
 
 }  // namespace shadowlab

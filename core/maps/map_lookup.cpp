@@ -1,0 +1,153 @@
+#include "maps/map_lookup.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+namespace {
+
+bool in_unit_range(double t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
+
+// Seed 002 normalizes the vector before assigning it and tests z < 0 in both of its lookup
+// branches; here each hemisphere is its own map with its own frame (the back one turned half a
+// turn about y), so one formula, (d.x, d.y) / (1 + d.z), serves both.
+glm::dvec4 paraboloid_homogeneous(const Paraboloid& p, const glm::dvec3& world) {
+    const glm::dvec3 q = p.frame_from_world * (world - p.centre);
+    const double distance = glm::length(q);
+    if (!(distance > 0.0)) return glm::dvec4(0.0);
+    const glm::dvec3 d = q / distance;
+    const double denominator = 1.0 + d.z;
+    if (!(denominator > 1e-12)) return glm::dvec4(0.0);  // straight behind: the map's singular point
+    const glm::dvec2 uv = (glm::dvec2(d.x, d.y) / denominator + 1.0) / 2.0;
+    return glm::dvec4(uv, (distance - p.near) / (p.far - p.near), 1.0);
+}
+
+// 0..5 for +x, -x, +y, -y, +z, -z: the major axis of r and its sign.
+int major_axis_face(const glm::dvec3& r) {
+    const glm::dvec3 a = glm::abs(r);
+    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    return 2 * axis + (r[axis] < 0.0 ? 1 : 0);
+}
+
+int first_map(const ShadowSetup& setup, auto&& holds) {
+    for (int i = 0; i < int(setup.maps.size()); ++i)
+        if (holds(setup.maps[i])) return i;
+    return -1;
+}
+
+int by_view_depth(const ShadowSetup& setup, const glm::dvec3& world) {
+    const MapSelection& s = setup.selection;
+    const double depth = glm::dot(world - s.eye, s.view_axis);
+    const int splits = int(std::min(s.split_depths.size(), setup.maps.size() + 1));
+    for (int i = 0; i + 1 < splits; ++i)
+        if (depth >= s.split_depths[i] && (depth < s.split_depths[i + 1] || (i + 2 == splits && depth == s.split_depths[i + 1])))
+            return i;
+    return -1;
+}
+
+bool on_map(const glm::dvec4& h) { return h.w > 0.0 && in_unit_range(h.x / h.w) && in_unit_range(h.y / h.w); }
+
+}  // namespace
+
+const char* to_string(Projection projection) {
+    switch (projection) {
+        case Projection::linear: return "linear";
+        case Projection::paraboloid: return "paraboloid";
+        case Projection::cube_face: return "cube face";
+    }
+    return "?";
+}
+
+const char* to_string(MapSelection::Rule rule) {
+    switch (rule) {
+        case MapSelection::Rule::only: return "one map";
+        case MapSelection::Rule::view_depth: return "by view depth";
+        case MapSelection::Rule::tile_bounds: return "by tile bounds";
+        case MapSelection::Rule::cube_face: return "by cube face";
+        case MapSelection::Rule::hemisphere: return "by hemisphere";
+    }
+    return "?";
+}
+
+glm::dvec4 map_homogeneous(const ShadowMap& map, const glm::dvec3& world) {
+    if (map.projection == Projection::paraboloid) return paraboloid_homogeneous(map.paraboloid, world);
+    return map.world_to_uvz * glm::dvec4(world, 1.0);
+}
+
+glm::dvec3 world_to_uvz(const ShadowMap& map, const glm::dvec3& world) {
+    const glm::dvec4 h = map_homogeneous(map, world);
+    return glm::dvec3(h) / h.w;
+}
+
+double hemisphere_side(const ShadowMap& map, const glm::dvec3& world) {
+    if (map.projection != Projection::paraboloid) return 1.0;
+    return (map.paraboloid.frame_from_world * (world - map.paraboloid.centre)).z;
+}
+
+int select_map(const ShadowSetup& setup, const glm::dvec3& world) {
+    if (setup.maps.empty()) return -1;
+    switch (setup.selection.rule) {
+        case MapSelection::Rule::only: return 0;
+        case MapSelection::Rule::view_depth: return by_view_depth(setup, world);
+        case MapSelection::Rule::tile_bounds:
+            return first_map(setup, [&](const ShadowMap& m) { return on_map(map_homogeneous(m, world)); });
+        case MapSelection::Rule::cube_face: {
+            const int face = major_axis_face(world - setup.selection.centre);
+            return first_map(setup, [&](const ShadowMap& m) { return m.cube_face == face; });
+        }
+        case MapSelection::Rule::hemisphere:
+            return first_map(setup, [&](const ShadowMap& m) { return hemisphere_side(m, world) >= 0.0; });
+    }
+    return -1;
+}
+
+double tile_resolution(const ShadowMap& map, int texture_resolution) {
+    // Tiles are square: their width in texels is their height.
+    return (map.viewport.z - map.viewport.x) * texture_resolution;
+}
+
+glm::dvec2 texture_uv(const ShadowMap& map, const glm::dvec2& uv) {
+    const glm::dvec2 lo(map.viewport.x, map.viewport.y), hi(map.viewport.z, map.viewport.w);
+    return lo + uv * (hi - lo);
+}
+
+glm::ivec2 texel_of(const ShadowMap& map, const glm::dvec2& uv, int texture_resolution) {
+    const double n = texture_resolution;
+    const glm::ivec2 first(int(std::lround(map.viewport.x * n)), int(std::lround(map.viewport.y * n)));
+    const glm::ivec2 last(int(std::lround(map.viewport.z * n)) - 1, int(std::lround(map.viewport.w * n)) - 1);
+    const glm::dvec2 t = texture_uv(map, uv) * n;
+    return glm::clamp(glm::ivec2(int(std::floor(t.x)), int(std::floor(t.y))), first, last);
+}
+
+std::optional<MapPoint> map_point(const ShadowSetup& setup, const glm::dvec3& world) {
+    const int i = select_map(setup, world);
+    if (i < 0) return std::nullopt;
+    const glm::dvec4 h = map_homogeneous(setup.maps[i], world);
+    if (!(h.w > 0.0)) return std::nullopt;
+    return MapPoint{i, h};
+}
+
+std::optional<MapLookup> look_up(const ShadowSetup& setup, const glm::dvec3& world, double bias) {
+    const std::optional<MapPoint> at = map_point(setup, world);
+    if (!at || !on_map(at->homogeneous)) return std::nullopt;
+    const glm::dvec4& h = at->homogeneous;
+    return MapLookup{at->map, glm::dvec2(h) / h.w, (h.z - setup.maps[at->map].z_bias_scale * bias) / h.w};
+}
+
+double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
+    double slope = 0.0;
+    if (map.projection == Projection::paraboloid) {  // d = (|q| - near) / (far - near)
+        const Paraboloid& pb = map.paraboloid;
+        const glm::dvec3 q = pb.frame_from_world * (p - pb.centre);
+        slope = glm::dot(glm::normalize(q), pb.frame_from_world * l) / (pb.far - pb.near);
+    } else {
+        const glm::dmat4& m = map.world_to_uvz;
+        const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+        const double a = glm::dot(glm::dvec3(m[0][2], m[1][2], m[2][2]), l);  // d_pre's slope along l
+        const double c = glm::dot(glm::dvec3(m[0][3], m[1][3], m[2][3]), l);  // w's slope along l
+        slope = (a * h.w - h.z * c) / (h.w * h.w);
+    }
+    return slope > 0.0 ? 1.0 / slope : INFINITY;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,57 @@
+#pragma once
+// The one CPU lookup of a shadow setup: world point -> its map, (u, v), depth with the bias, and the
+// texel of the texture (atlas) it reads. The rasterizer, the metrics, the views and the exports use
+// it; the GPU pass (viewer/render/shadow_map_pass.cpp) mirrors it line by line.
+#include <optional>
+#include <glm/glm.hpp>
+
+#include "maps/shadow_map.hpp"
+
+namespace shadowlab {
+
+// The point under one map before the division: (u w, v w, d_pre, w) for linear maps and cube faces;
+// (u, v, d, 1) for a paraboloid (w = 0 at the point straight behind it, where the map is singular).
+glm::dvec4 map_homogeneous(const ShadowMap& map, const glm::dvec3& world);
+
+// (u, v, d) of a world point under one map, after the division by w.
+glm::dvec3 world_to_uvz(const ShadowMap& map, const glm::dvec3& world);
+
+// The signed distance of a world point to a paraboloid map's hemisphere plane (>= 0: its side);
+// +1 for the other projections, which have no such plane.
+double hemisphere_side(const ShadowMap& map, const glm::dvec3& world);
+
+// The index of the map the setup's selection rule gives the point, or -1 when none does (lit).
+int select_map(const ShadowSetup& setup, const glm::dvec3& world);
+
+// Map texels per side of one map's tile in a texture of `texture_resolution` texels per side.
+double tile_resolution(const ShadowMap& map, int texture_resolution);
+
+// Where a map's (u, v) lies in the texture, and the texel it reads there (nearest, kept in the tile).
+glm::dvec2 texture_uv(const ShadowMap& map, const glm::dvec2& uv);
+glm::ivec2 texel_of(const ShadowMap& map, const glm::dvec2& uv, int texture_resolution);
+
+// A point under the map the selection gives it, before the division: nullopt when no map is
+// selected or the point lies behind the map's centre (w <= 0). (u, v, d) may fall outside [0,1].
+struct MapPoint {
+    int map = -1;
+    glm::dvec4 homogeneous;  // map_homogeneous(maps[map], p)
+
+    glm::dvec3 uvz() const { return glm::dvec3(homogeneous) / homogeneous.w; }
+};
+std::optional<MapPoint> map_point(const ShadowSetup& setup, const glm::dvec3& world);
+
+struct MapLookup {
+    int map = -1;        // which map
+    glm::dvec2 uv;       // in that map, [0,1]
+    double depth = 0.0;  // (d_pre - z_bias_scale * bias) / w
+};
+
+// The point's map, (u, v) and biased depth (bias in world units along the light); nullopt where no
+// map covers it (behind a map's centre, outside its [0,1] square, or no map selected): lit.
+std::optional<MapLookup> look_up(const ShadowSetup& setup, const glm::dvec3& world, double bias);
+
+// World units along the light per unit of stored depth at p under one map: 1 / (dd / dt), d the
+// divided depth, t the distance along `light_direction`.
+double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& light_direction, const glm::dvec3& p);
+
+}  // namespace shadowlab

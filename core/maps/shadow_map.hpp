@@ -1,0 +1,62 @@
+#pragma once
+// A shadow setup: the maps a method computed, where each lies in the texture, and how a world point
+// picks its map. Every consumer (rasterizer, metrics, views, exports, the GPU pass) reads maps
+// through maps/map_lookup.hpp; none assumes a single linear map.
+#include <vector>
+#include <glm/glm.hpp>
+
+#include "notes/note.hpp"
+
+namespace shadowlab {
+
+enum class Projection {
+    linear,      // a 4x4, world (x, y, z, 1) -> (u w, v w, d_pre, w): orthographic, perspective and warped maps
+    paraboloid,  // one hemisphere of a dual-paraboloid map (Brabec, Annen and Seidel 2002)
+    cube_face,   // one 90° face of a cube map: a linear 4x4, picked by the major axis of p - centre
+};
+const char* to_string(Projection projection);
+
+// A paraboloid hemisphere: a world point p seen from `centre` in the hemisphere's frame, q =
+// frame_from_world (p - centre), d = q / |q|, maps to (u, v) = ((d.x, d.y) / (1 + d.z) + 1) / 2 and
+// depth (|q| - near) / (far - near).
+struct Paraboloid {
+    glm::dvec3 centre{0.0};
+    glm::dmat3 frame_from_world{1.0};  // a rotation; the hemisphere is +z of the frame
+    double near = 0.01, far = 1.0;
+};
+
+struct ShadowMap {
+    Projection projection = Projection::linear;
+    glm::dmat4 world_to_uvz{1.0};  // linear and cube_face: u, v, d in [0,1] after division by w
+    Paraboloid paraboloid;         // paraboloid only
+    int cube_face = 0;             // cube_face only: 0..5 for +x, -x, +y, -y, +z, -z
+    glm::dvec4 viewport{0.0, 0.0, 1.0, 1.0};  // (u0, v0, u1, v1): the map's tile in the texture
+    // Pre-division depth offset per world unit of bias along the light (XPSM step 18):
+    // d' = (d_pre - z_bias_scale * bias) / w.
+    double z_bias_scale = 1.0;
+};
+
+// How a world point picks its map among several.
+struct MapSelection {
+    enum class Rule {
+        only,         // one map serves every point
+        view_depth,   // map i serves view depths in [split_depths[i], split_depths[i + 1]) (cascades)
+        tile_bounds,  // the first map whose (u, v) holds the point (seed 003's atlas lookup)
+        cube_face,    // the face of the major axis of p - centre
+        hemisphere,   // the paraboloid whose +z side holds p
+    };
+    Rule rule = Rule::only;
+    glm::dvec3 eye{0.0};                 // view_depth: depth = (p - eye) . view_axis
+    glm::dvec3 view_axis{0.0, 0.0, -1.0};
+    std::vector<double> split_depths;    // view_depth: maps.size() + 1 increasing depths
+    glm::dvec3 centre{0.0};              // cube_face: the light's position
+};
+const char* to_string(MapSelection::Rule rule);
+
+struct ShadowSetup {
+    std::vector<ShadowMap> maps;
+    MapSelection selection;
+    std::vector<Note> fallbacks;  // the degradations taken, each named (notes/note.hpp)
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,47 @@
+#include "notes/note.hpp"
+
+#include <stdexcept>
+
+namespace shadowlab {
+
+const std::vector<NoteInfo>& all_note_kinds() {
+    using enum NoteKind;
+    constexpr NoteCategory F = NoteCategory::fallback, L = NoteCategory::limit;
+    static const std::vector<NoteInfo> kinds{
+        {empty_scene, F, "empty scene", "no object to fit a map to: the identity map"},
+        {empty_body, F, "empty intersection body", "the view frustum does not meet the scene: the uniform map"},
+        {behind_light, F, "points behind the light", "a spot or point light's map cannot cover them: left out"},
+        {outside_cone, F, "points outside the light's cone", "the map covers the cone only"},
+        {not_directional, F, "not a directional light", "a warp for directional lights only: the focused map"},
+        {nothing_to_warp, F, "no caster can shadow a visible receiver", "nothing to warp: the focused map"},
+        {miners_lamp, F, "miner's lamp", "light nearly along the view: a warp gains nothing, the focused map"},
+        {empty_focus_region, F, "empty focus region", "no caster's light rays meet a receiver: the focused map"},
+        {parallel_light, F, "light parallel to the view", "the warp degenerates: the focused (or unwarped) map"},
+        {degenerate_centre_line, F, "degenerate centre line", "TSM's centre line has no length: the focused map"},
+        {focus_out_of_range, F, "focus point out of the 80% rule's range", "TSM's trapezoid fails: the focused map"},
+        {open_mesh, L, "open or non-manifold mesh", "two-sided volumes, silhouette edges with multiplicity"},
+        {eye_in_volume, L, "eye inside a shadow volume", "z-pass counts are wrong there; z-fail holds"},
+        {not_planar_receiver, L, "only planar receivers", "planar shadows fall on planes only"},
+        {below_plane, L, "casters below the plane", "they throw false shadows onto it"},
+        {beyond_light, L, "casters beyond the light", "clipped at w = 0, else they throw anti-shadows"},
+    };
+    return kinds;
+}
+
+const NoteInfo& info(NoteKind kind) {
+    for (const NoteInfo& i : all_note_kinds())
+        if (i.kind == kind) return i;
+    throw std::logic_error("a note kind missing from all_note_kinds()");
+}
+
+const char* to_string(NoteKind kind) { return info(kind).name; }
+
+std::string describe(const Note& note) { return std::string(to_string(note.kind)) + ": " + note.message; }
+
+std::string describe(const std::vector<Note>& notes) {
+    std::string text;
+    for (const Note& note : notes) text += (text.empty() ? "" : "; ") + describe(note);
+    return text;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,54 @@
+#pragma once
+// What a method or technique tells the user about its result, typed: a fallback (a degradation it
+// took: another map, a clamp) or a limit (what a geometric technique cannot get right here). Every
+// kind is listed once, with its name and meaning, in note.cpp; the CLI, the window and the tests
+// compare kinds and show the name with the particulars.
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+enum class NoteCategory { fallback, limit };
+
+enum class NoteKind {
+    // Fallbacks of the map methods.
+    empty_scene,
+    empty_body,
+    behind_light,
+    outside_cone,
+    not_directional,
+    nothing_to_warp,
+    miners_lamp,
+    empty_focus_region,
+    parallel_light,
+    degenerate_centre_line,
+    focus_out_of_range,
+    // Limits of the geometric techniques (shadow volumes, planar projection).
+    open_mesh,
+    eye_in_volume,
+    not_planar_receiver,
+    below_plane,
+    beyond_light,
+};
+
+struct Note {
+    NoteKind kind;
+    std::string message;  // the particulars: counts, names, what was used instead
+};
+
+struct NoteInfo {
+    NoteKind kind;
+    NoteCategory category;
+    const char* name;     // as users read it: "empty intersection body"
+    const char* meaning;  // one line: when it happens and what follows
+};
+
+const std::vector<NoteInfo>& all_note_kinds();
+const NoteInfo& info(NoteKind kind);
+const char* to_string(NoteKind kind);  // info(kind).name
+
+// "name: message"; several notes joined by "; ", each starting with its name. Empty for none.
+std::string describe(const Note& note);
+std::string describe(const std::vector<Note>& notes);
+
+}  // namespace shadowlab

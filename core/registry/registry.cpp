@@ -1,0 +1,124 @@
+// The list of methods: one line each. Adding a method: its files, one line here (see
+// docs/ARCHITECTURE.md, "Adding a method").
+#include <stdexcept>
+
+#include "methods/focused.hpp"
+#include "methods/lispsm.hpp"
+#include "methods/psm.hpp"
+#include "methods/tsm.hpp"
+#include "methods/uniform.hpp"
+#include "methods/xpsm.hpp"
+#include "planar/planar_technique.hpp"
+#include "registry/method.hpp"
+#include "volumes/volumes_technique.hpp"
+
+namespace shadowlab {
+namespace {
+
+constexpr LightSupport kAllLights{};
+constexpr LightSupport kDirectionalOnly{true, false, false};
+
+std::deque<Method>& registry() {
+    static std::deque<Method> methods{
+        {.name = "uniform",
+         .title = "Uniform shadow map",
+         .description = "orthographic map fit to the whole scene's bounds",
+         .lights = kAllLights,
+         .compute_maps = compute_uniform},
+        {.name = "focused",
+         .title = "Focused shadow map",
+         .description = "orthographic map fit to the intersection body",
+         .settings = {body_kernel_setting()},
+         .lights = kAllLights,
+         .compute_maps = compute_focused},
+        {.name = "psm",
+         .title = "Perspective shadow map",
+         .description = "Stamminger and Drettakis: the map built in the camera's post-perspective space",
+         .settings = {body_kernel_setting()},
+         .lights = kDirectionalOnly,
+         .covers = Coverage::shadowable_points,
+         .compute_maps = compute_psm},
+        {.name = "lispsm",
+         .title = "Light space perspective shadow map",
+         .description = "Wimmer et al.: a perspective warp along the view, in light space",
+         .settings = lispsm_settings(),
+         .lights = kDirectionalOnly,
+         .covers = Coverage::shadowable_points,
+         .compute_maps = compute_lispsm},
+        {.name = "tsm",
+         .title = "Trapezoidal shadow map",
+         .description = "Martin and Tan: the view, seen from the light, bounded by a trapezoid warped onto the map",
+         .settings = tsm_settings(),
+         .lights = kDirectionalOnly,
+         .covers = Coverage::shadowable_points,
+         .compute_maps = compute_tsm},
+        {.name = "xpsm",
+         .title = "Extended perspective shadow map",
+         .description = "Gusev's XPSM: a projection vector in light space, w clipped at εW",
+         .settings = xpsm_settings(),
+         .lights = kDirectionalOnly,
+         .covers = Coverage::shadowable_points,
+         .compute_maps = compute_xpsm},
+        {.name = "volumes",
+         .title = "Stencil shadow volumes",
+         .description = "Crow, Heidmann, Everitt and Kilgard: silhouette edges extruded to infinity, faces counted "
+                        "per eye ray",
+         .settings = {volumes_count_setting()},
+         .lights = kAllLights,
+         .compute_geometry = compute_volumes},
+        {.name = "planar",
+         .title = "Planar projection shadows",
+         .description = "Blinn: the casters flattened onto each receiving plane by the matrix (P . L) I - L P^T",
+         .lights = kAllLights,
+         .compute_geometry = compute_planar},
+    };
+    return methods;
+}
+
+}  // namespace
+
+bool LightSupport::handles(LightType type) const {
+    switch (type) {
+        case LightType::directional: return directional;
+        case LightType::spot: return spot;
+        case LightType::point: return point;
+    }
+    return false;
+}
+
+std::string LightSupport::text() const {
+    std::string out;
+    for (LightType type : {LightType::directional, LightType::spot, LightType::point})
+        if (handles(type)) out += (out.empty() ? "" : ", ") + std::string(to_string(type));
+    return out;
+}
+
+const char* to_string(Produces produces) { return produces == Produces::maps ? "shadow maps" : "stencil geometry"; }
+
+const std::deque<Method>& all_methods() { return registry(); }
+
+const Method* find_method(const std::string& name) {
+    for (const Method& m : registry())
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+std::string method_names(const std::string& separator) {
+    std::string names;
+    for (const Method& m : registry()) names += (names.empty() ? "" : separator) + m.name;
+    return names;
+}
+
+const Method& method_or_throw(const std::string& name) {
+    if (const Method* m = find_method(name)) return *m;
+    throw std::invalid_argument("unknown method '" + name + "' (known: " + method_names(", ") + ")");
+}
+
+void register_method(Method method) {
+    if (find_method(method.name)) throw std::invalid_argument("method '" + method.name + "' is registered already");
+    if ((method.compute_maps == nullptr) == (method.compute_geometry == nullptr))
+        throw std::invalid_argument("method '" + method.name + "': set exactly one of compute_maps, compute_geometry");
+    registry().push_back(std::move(method));
+}
+
+}  // namespace shadowlab
