@@ -57,8 +57,9 @@ struct Method {
     bool makes_maps() const { return produces() == Produces::maps; }
 };
 
-// Every method, in the order the UI lists them: the maps, then the geometric techniques. A deque:
-// registering one more never moves the others, so pointers to entries stay valid.
+// Every method, in the order the UI lists them: the shipped maps, the shipped geometric techniques,
+// then any registered later. A deque: registering one more never moves the others, so pointers to
+// entries stay valid.
 const std::deque<Method>& all_methods();
 // Nullptr when no method has that name.
 const Method* find_method(const std::string& name);

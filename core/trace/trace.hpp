@@ -59,7 +59,7 @@ struct NamedGeometry {
 };
 
 struct Step {
-    std::string id;           // stable, e.g. "body" or "xpsm.5"
+    std::string id;           // stable, e.g. "body" or "xpsm-5"
     std::string title;        // as the paper names it, e.g. "maxLengthP"
     std::string explanation;  // one line: the formula this step applies
     Space space = Space::world;

@@ -22,7 +22,7 @@ namespace {
 constexpr int kMaxMaps = ShadowMapPass::kMaxMaps;
 
 // A map's tile in texels of the texture: its first texel and its size, rounded as texel_of rounds
-// (maps/map_lookup.cpp), so that stage 1 draws exactly the texels stage 2 may read.
+// (maps/map_lookup.cpp): stage 1's scissor box, so that it writes exactly the texels stage 2 may read.
 struct Tile {
     int x, y, width, height;
 };
@@ -154,11 +154,21 @@ float shadowHemisphereSide(int i, vec3 p) {
 }
 )";
 
-// Stage 1: the drawn map's (u, v, d) in [0,1] to OpenGL clip space [-1,1] (x' = 2x - w, the same
-// for y and z), and the distance to its hemisphere plane, which clips a paraboloid's casters where
-// the CPU rasterizer cuts them (GL_CLIP_DISTANCE0 is on for paraboloids only).
+// Stage 1: the drawn map and its tile (u0, v0, u1, v1) in the texture.
+constexpr const char* kDepthDeclarations = R"(uniform int shadowDrawnMap;
+uniform vec4 shadowDrawnViewport;
+)";
+
+// Stage 1, the viewport on the whole texture: the drawn map's (u, v) placed in its tile as
+// texture_uv places it, before the division and unrounded (a viewport on the tile would round its
+// edges to whole texels and shift the map against the CPU rasterizer's by up to a texel), then in
+// OpenGL clip space (x' = 2x - w, the same for y and z); and the distance to its hemisphere plane,
+// which clips a paraboloid's casters where the CPU rasterizer cuts them (GL_CLIP_DISTANCE0 is on for
+// paraboloids only).
 constexpr const char* kDepthPosition = R"(vec4 shadowH = shadowHomogeneous(shadowDrawnMap, vertexMC.xyz);
-  gl_Position = vec4(2.0 * shadowH.xyz - shadowH.w, shadowH.w);
+  vec4 shadowTile = shadowDrawnViewport;
+  vec2 shadowInTexture = shadowTile.xy * shadowH.w + shadowH.xy * (shadowTile.zw - shadowTile.xy);
+  gl_Position = vec4(2.0 * shadowInTexture - shadowH.w, 2.0 * shadowH.z - shadowH.w, shadowH.w);
   gl_ClipDistance[0] = shadowHemisphereSide(shadowDrawnMap, vertexMC.xyz);)";
 
 // Stage 2, after the projections: select_map, look_up and texel_of (maps/map_lookup.cpp) line by
@@ -232,13 +242,20 @@ vec3 shadowSeenNormal(vec3 p) {
   return dot(n, shadowEye - p) < 0.0 ? -n : n;
 }
 vec2 shadowUv(int i, vec3 p) { vec4 h = shadowHomogeneous(i, p); return h.xy / h.w; }
+// uv_derivative: the quotient rule on a linear map's rows; a central difference for a paraboloid.
+vec2 shadowUvDerivative(int i, vec3 p, vec3 direction) {
+  if (shadowMapProjection[i] == shadowParaboloid) {
+    float step = 1e-3 * length(p - shadowMapParaboloidCentre[i]);  // float32: a coarser step than the CPU's
+    return (shadowUv(i, p + step * direction) - shadowUv(i, p - step * direction)) / (2.0 * step);
+  }
+  vec4 h = shadowMapWorldToUvz[i] * vec4(p, 1.0), dh = shadowMapWorldToUvz[i] * vec4(direction, 0.0);
+  return (dh.xy * h.w - h.xy * dh.w) / (h.w * h.w);
+}
 float shadowSlopeScaledBias(int i, vec3 p, vec3 n) {
   vec3 l = shadowAlongLight(p);
   vec3 a = normalize(cross(l, abs(l.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
   vec3 b = cross(l, a);
-  float h = 1e-3 * (1.0 + length(p));
-  vec2 uv = shadowUv(i, p);
-  vec2 ja = (shadowUv(i, p + h * a) - uv) / h, jb = (shadowUv(i, p + h * b) - uv) / h;
+  vec2 ja = shadowUvDerivative(i, p, a), jb = shadowUvDerivative(i, p, b);
   float t = dot(ja, ja) + dot(jb, jb), d = ja.x * jb.y - ja.y * jb.x;
   float smallest = 0.5 * (t - sqrt(max(t * t - 4.0 * d * d, 0.0)));  // σ_min²
   float texels = (shadowMapViewport[i].z - shadowMapViewport[i].x) * float(shadowResolution);  // tile_resolution
@@ -341,10 +358,12 @@ void ShadowMapPass::prepare_targets(vtkOpenGLRenderWindow* window) {
 }
 
 // Stage 1: the casters' depth, each map into its own tile of the texture, cleared to 1 (nothing
-// cast) once for all of them.
+// cast) once for all of them. The viewport is the whole texture (the vertex shader places each map
+// in its tile), the scissor box each tile's texels.
 void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
     vtkOpenGLState* gl = window->GetState();
     vtkOpenGLState::ScopedglViewport viewport(gl);
+    gl->vtkglViewport(0, 0, resolution_, resolution_);
     vtkOpenGLState::ScopedglScissor scissor_box(gl);
     vtkOpenGLState::ScopedglEnableDisable scissor(gl, GL_SCISSOR_TEST);
     gl->PushFramebufferBindings();
@@ -356,7 +375,7 @@ void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow*
     gl->vtkglDepthMask(GL_TRUE);
     gl->vtkglClearDepth(1.0);
     gl->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
-    gl->vtkglEnable(GL_SCISSOR_TEST);  // a tile's casters stay in it, whatever the rasterizer's guard band
+    gl->vtkglEnable(GL_SCISSOR_TEST);  // the viewport holds every tile: a map's casters stay in its own
     gl->vtkglEnable(GL_DEPTH_TEST);
     gl->vtkglDepthFunc(GL_LEQUAL);
     glEnable(GL_DEPTH_CLAMP);
@@ -378,7 +397,6 @@ void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow*
 void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map) {
     const Tile tile = tile_of(setup_.maps[map], resolution_);
     if (tile.width <= 0 || tile.height <= 0) return;  // a tile without texels: nothing to draw
-    gl->vtkglViewport(tile.x, tile.y, tile.width, tile.height);
     gl->vtkglScissor(tile.x, tile.y, tile.width, tile.height);
     drawn_map_ = map;
     const bool paraboloid = setup_.maps[map].projection == Projection::paraboloid;
@@ -404,7 +422,7 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
     const std::string projection = glsl_constants() + kProjectionDeclarations;
     if (stage_ == Stage::depth) {
         vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
-                                     "//VTK::PositionVC::Dec\n" + projection + "uniform int shadowDrawnMap;\n", false);
+                                     "//VTK::PositionVC::Dec\n" + projection + kDepthDeclarations, false);
         return true;
     }
     vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec", "//VTK::PositionVC::Dec\nout vec4 shadowWorldVSOutput;\n",
@@ -429,7 +447,8 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMa
                                         vtkOpenGLVertexArrayObject*) {
     MapArrays maps = map_arrays(setup_, resolution_);
     if (stage_ == Stage::depth)
-        return all_set(set_projection_uniforms(program, maps), program->SetUniformi("shadowDrawnMap", drawn_map_));
+        return all_set(set_projection_uniforms(program, maps), program->SetUniformi("shadowDrawnMap", drawn_map_),
+                       program->SetUniform4f("shadowDrawnViewport", glm::value_ptr(maps.viewport[drawn_map_])));
     return all_set(set_projection_uniforms(program, maps), set_lookup_uniforms(program, maps, setup_),
                    program->SetUniformi("shadowDepth", depth_->GetTextureUnit()),
                    program->SetUniform4f("shadowLight", light_), program->SetUniform3f("shadowEye", eye_),

@@ -4,11 +4,13 @@
 // tile of one depth texture. Our own render pass, because vtkShadowMapPass fixes its own light camera.
 //
 // Stage 1 renders the casters' depth into an FBO depth texture, once per map into that map's tile
-// (depth clamped, as the CPU rasterizer clamps casters before the near plane; a paraboloid clipped
-// to its hemisphere). Stage 2 renders the scene through `shade` (normally a vtkRenderStepsPass) and
-// looks each fragment up as maps/map_lookup.cpp does: the setup's rule picks the map, the method's z
-// bias is applied before the division by w (XPSM step 18), constant or slope-scaled per fragment
-// exactly as the CPU metrics compute it, and the nearest texel of the map's tile is compared.
+// (placed by the vertex shader exactly where the CPU rasterizer places it, however its edges fall
+// between texels, and scissored to the tile's texels; depth clamped, as the CPU rasterizer clamps
+// casters before the near plane; a paraboloid clipped to its hemisphere). Stage 2 renders the scene
+// through `shade` (normally a vtkRenderStepsPass) and looks each fragment up as maps/map_lookup.cpp
+// does: the setup's rule picks the map, the method's z bias is applied before the division by w
+// (XPSM step 18), constant or slope-scaled per fragment exactly as the CPU metrics compute it, and
+// the nearest texel of the map's tile is compared.
 #include <vector>
 #include <glm/glm.hpp>
 #include <vtkOpenGLRenderPass.h>

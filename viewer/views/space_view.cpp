@@ -185,7 +185,9 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKin
     const size_t left_out = in.has_map() ? add_input_points(renderer, in, *to_view) : 0;
     add_steps(renderer, in, *to_view, options.step, report);
     place_overview_camera(renderer, in, view, framed_region(in, view, *to_view));
-    const std::string step = options.step.empty() ? in.trace.steps().back().id : options.step;
+    const std::string step = !options.step.empty()      ? options.step
+                             : in.trace.steps().empty() ? std::string("none recorded")
+                                                        : in.trace.steps().back().id;
     const std::string legend = in.has_map() ? "white: camera frustum, cyan: the map's volume; box corners inside the map "
                                               "white, outside magenta (" + std::to_string(left_out) + ")"
                                             : "white: camera frustum; no map (a geometric technique)";

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <gtest/gtest.h>
 
+#include "methods/uniform.hpp"
 #include "metrics/shadow_error.hpp"
 #include "reference/exact_shadows.hpp"
 #include "registry/method.hpp"
@@ -17,6 +18,26 @@ using namespace shadowlab::testing;
 namespace {
 
 constexpr int kWidth = 480, kHeight = 270;
+
+// Three tiles a third of the texture wide side by side, as a cube map's 3x2 atlas has them: at
+// 1024 texels their edges fall mid-texel (341 1/3, 682 2/3). The uniform map thrice, chosen by view
+// depth, split across the box's shadow so that each tile serves some of its edges.
+ShadowSetup thirds(const ShadowInputs& inputs, const Settings& settings, Trace* trace) {
+    const ShadowSetup uniform = compute_uniform(inputs, settings, trace);
+    ShadowSetup setup{.fallbacks = uniform.fallbacks};
+    for (int i = 0; i < 3; ++i) {
+        ShadowMap map = uniform.maps.at(0);
+        map.viewport = {i / 3.0, 0.0, (i + 1) / 3.0, 1.0 / 3.0};
+        setup.maps.push_back(map);
+    }
+    const Camera& camera = inputs.camera;
+    const double target = glm::length(camera.target - camera.position);
+    setup.selection = {.rule = MapSelection::Rule::view_depth,
+                       .eye = camera.position,
+                       .view_axis = camera.view_direction(),
+                       .split_depths = {0.0, target - 0.45, target + 0.45, camera.far}};
+    return setup;
+}
 
 }  // namespace
 
@@ -59,3 +80,37 @@ TEST_P(GpuAgreesWithCpu, OnVisiblePixelsAwayFromShadowEdges) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuAgreesWithCpu, ::testing::Values("box_on_plane", "default", "spot"));
+
+// Tiles whose edges fall mid-texel are drawn where the CPU rasterizer draws them, not rounded to
+// whole texels: shifted by a fraction of a texel, they flip texels along the box's silhouette.
+class GpuAgreesWithCpuOnTiles : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        if (!find_method("thirds"))
+            register_method(
+                {.name = "thirds", .title = "thirds", .description = "a test's own", .compute_maps = thirds});
+    }
+};
+
+TEST_F(GpuAgreesWithCpuOnTiles, WhoseEdgesFallMidTexel) {
+    constexpr int width = 960, height = 540;  // pixels finer than the texels, so that a flipped texel shows
+    const Scene scene = floating_box(width, height);
+    for (int resolution : {256, 1024}) {  // tiles of 85 1/3 and 341 1/3 texels
+        const Inspection in = inspect(scene, "thirds", resolution);
+        const ReferenceImage& ref = in.reference(width, height);
+        std::array<size_t, 3> served{};
+        for (size_t i = 0; i < ref.visible.size(); ++i)
+            if (ref.visible[i])
+                if (const int map = select_map(in.setup, ref.position[i]); map >= 0) ++served[map];
+        for (size_t pixels : served) EXPECT_GT(pixels, 1000u) << "every tile is looked up";
+
+        const Agreement a = gpu_against_cpu_lookup(in, width, height);
+        ASSERT_EQ(a.undrawn, 0u);
+        ASSERT_GT(a.compared, width * height / 4u);
+        EXPECT_GE(a.share(), 0.9999) << resolution << ": " << a.compared - a.agreed << " of " << a.compared
+                                     << " pixels differ";
+        RecordProperty("agreement_" + std::to_string(resolution), std::to_string(a.share()));
+        std::cout << "thirds at " << resolution << ": GPU and CPU agree on " << a.agreed << " of " << a.compared
+                  << " pixels away from edges\n";
+    }
+}
