@@ -9,6 +9,12 @@ namespace shadowlab {
 
 using HomogeneousPolygon = std::vector<glm::dvec4>;  // convex, in order
 
+// The polygon moved by `offset`: points move, points at infinity (w = 0) stay.
+inline HomogeneousPolygon translated(HomogeneousPolygon polygon, const glm::dvec3& offset) {
+    for (glm::dvec4& v : polygon) v += glm::dvec4(offset * v.w, 0.0);
+    return polygon;
+}
+
 struct ClipPlane {
     glm::dvec4 normal;
     double offset;

@@ -8,9 +8,11 @@
 namespace shadowlab {
 namespace {
 
-// Distances under this count as zero: relative to the scene's size and position.
+// Distances under this count as zero: a share of the scene's size, plus the rounding of coordinates
+// as far from the origin as its centre (a few hundred double ulps there), so that a small scene far
+// away keeps its shape.
 double clip_tolerance(const Aabb& s) {
-    return 1e-10 * (s.diagonal() + glm::length(s.center()));
+    return 1e-10 * s.diagonal() + 1e-13 * glm::length(s.center());
 }
 
 bool cuts(const ConvexPolyhedron& poly, const Plane& plane, double tolerance) {

@@ -134,6 +134,18 @@ std::optional<MapLookup> look_up(const ShadowSetup& setup, const glm::dvec3& wor
     return MapLookup{at->map, glm::dvec2(h) / h.w, (h.z - setup.maps[at->map].z_bias_scale * bias) / h.w};
 }
 
+glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::dvec3& direction) {
+    if (map.projection == Projection::paraboloid) {
+        const double step = 1e-6 * glm::length(p - map.paraboloid.centre);
+        return (glm::dvec2(world_to_uvz(map, p + step * direction)) - glm::dvec2(world_to_uvz(map, p - step * direction))) /
+               (2.0 * step);
+    }
+    // (u, v) = h.xy / h.w with h = M (p, 1); along the direction h changes by M (direction, 0).
+    const glm::dvec4 h = map.world_to_uvz * glm::dvec4(p, 1.0);
+    const glm::dvec4 dh = map.world_to_uvz * glm::dvec4(direction, 0.0);
+    return (glm::dvec2(dh) * h.w - glm::dvec2(h) * dh.w) / (h.w * h.w);
+}
+
 double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
     double slope = 0.0;
     if (map.projection == Projection::paraboloid) {  // d = (|q| - near) / (far - near)

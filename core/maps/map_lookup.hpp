@@ -50,7 +50,12 @@ struct MapLookup {
 // map covers it (behind a map's centre, outside its [0,1] square, or no map selected): lit.
 std::optional<MapLookup> look_up(const ShadowSetup& setup, const glm::dvec3& world, double bias);
 
-// World units along the light per unit of stored depth at p under one map: 1 / (dd / dt), d the
+// How (u, v) moves per world unit along `direction` at p under one map: exact for linear maps and
+// cube faces (the quotient rule on the matrix rows), a central difference sized by the distance to
+// the centre for a paraboloid; no step tied to the scene's extent or position.
+glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::dvec3& direction);
+
+// World units along the light per unit at p under one map: 1 / (dd / dt), d the
 // divided depth, t the distance along `light_direction`.
 double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& light_direction, const glm::dvec3& p);
 

@@ -107,7 +107,7 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
 
 std::vector<SettingSpec> lispsm_settings() {
     return {{"eta", "Lloyd's η: -1 uniform, 0 LiSPSM's n_opt, 1 PSM-like", "0", -1.0, 1.0, {}},
-            {"n", "warp near distance; 0 = automatic (n_opt)", "0", 0.0, 1e12, {}},
+            {"n", "warp near distance; 0 = automatic (n_opt)", "0", 0.0, 1e12, {}, 1},
             body_kernel_setting()};
 }
 

@@ -14,6 +14,7 @@ struct SettingSpec {
     std::string default_value;
     double min = 0.0, max = 0.0;       // numbers: the closed range
     std::vector<std::string> choices;  // choices: the allowed words (empty for a number)
+    int length_power = 0;              // numbers: the unit, world length to this power (XPSM's coef: -1)
 
     bool is_choice() const { return !choices.empty(); }
 };

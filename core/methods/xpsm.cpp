@@ -230,7 +230,7 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
 }
 
 std::vector<SettingSpec> xpsm_settings() {
-    return {{"coef", "warp strength: lengthP = coef / cos γ (1 / world units)", "0.05", 1e-6, 100.0, {}},
+    return {{"coef", "warp strength: lengthP = coef / cos γ (1 / world units)", "0.05", 1e-6, 100.0, {}, -1},
             {"epsilonW", "how close to w = 0 the warp may push a caster or receiver", "0.085", 1e-3, 0.999, {}},
             body_kernel_setting()};
 }

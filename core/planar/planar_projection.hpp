@@ -30,8 +30,8 @@ std::optional<ReceiverPlane> receiver_plane(const Scene& scene, int object);
 
 struct FlattenedCasters {
     std::vector<HomogeneousPolygon> polygons;  // on the plane, w = 1
-    int below_plane = 0;                       // caster triangles reaching below it (by more than 1e-5 of
-                                               // the scene's largest coordinate): false shadows
+    int below_plane = 0;                       // caster triangles reaching below it (by more than 1e-3 of
+                                               // their object's size): false shadows
     int beyond_light = 0;                      // caster triangles reaching beyond the light: clipped at w = 0
 };
 

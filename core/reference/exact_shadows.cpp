@@ -1,4 +1,8 @@
-// The visible point and the normal are recomputed in double precision from the hit triangle.
+// The visible point (the pixel's ray on the hit triangle's plane) and the normal are recomputed in
+// double precision from the hit triangle.
+// Embree works in float32: the tracer gets the scene in camera-relative coordinates (as
+// large-world renderers rebase), so that a scene a million units from the origin is traced as
+// precisely as one at the origin; everything else stays in world coordinates, in double.
 #include "reference/exact_shadows.hpp"
 
 #include "math/parallel_rows.hpp"
@@ -17,12 +21,18 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kRelativeOffset = 1e-5;  // shadow-ray origin offset per unit of the scene's largest coordinate
+// Shadow rays leave the surface by this many float32 steps (ulps) of the largest coordinate of the
+// point and its triangle, in camera-relative coordinates: the tracer's triangle, rounded to
+// float32, lies within half an ulp of those coordinates of the exact one (Wächter and Binder, "A
+// Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems, 2019: an offset sized
+// by the local coordinates' floating-point precision, not by the scene's extent).
+constexpr double kOffsetUlps = 64.0;
 
-double largest_coordinate(const std::vector<glm::dvec3>& vertices) {
-    double largest = 0.0;
-    for (const glm::dvec3& v : vertices) largest = std::max({largest, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-    return largest;
+// The scene as the tracer sees it: every vertex relative to `origin`.
+WorldTriangles rebased(const WorldTriangles& triangles, const glm::dvec3& origin) {
+    WorldTriangles out = triangles;
+    for (glm::dvec3& v : out.vertices) v -= origin;
+    return out;
 }
 
 std::array<glm::dvec3, 3> corners(const WorldTriangles& triangles, int triangle) {
@@ -30,13 +40,31 @@ std::array<glm::dvec3, 3> corners(const WorldTriangles& triangles, int triangle)
     return {triangles.vertices[t[0]], triangles.vertices[t[1]], triangles.vertices[t[2]]};
 }
 
-// Whether the surface point p of `triangle` sees the light past every caster.
+double largest_coordinate(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+// Where the ray from the eye (the origin) along `direction` meets the triangle's plane: exact in
+// double, where Embree's float32 barycentric weights would place the point off the pixel's ray.
+glm::dvec3 on_plane(const std::array<glm::dvec3, 3>& triangle, const glm::dvec3& direction) {
+    const glm::dvec3 normal = glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]);
+    return direction * (glm::dot(normal, triangle[0]) / glm::dot(normal, direction));
+}
+
+// kOffsetUlps float32 steps at the largest coordinate of p and the triangle (camera-relative).
+double surface_offset(const std::array<glm::dvec3, 3>& triangle, const glm::dvec3& p) {
+    double largest = largest_coordinate(p);
+    for (const glm::dvec3& v : triangle) largest = std::max(largest, largest_coordinate(v));
+    const float at = std::max(static_cast<float>(largest), std::numeric_limits<float>::min());
+    return kOffsetUlps * static_cast<double>(std::nextafter(at, INFINITY) - at);
+}
+
+// Whether the surface point p of `triangle` sees the light past every caster; p, the triangle and
+// the light in the tracer's camera-relative coordinates.
 bool sees_light(const RayTracer& tracer, const Light& light, const std::array<glm::dvec3, 3>& triangle,
-                const glm::dvec3& p, double offset) {
+                const glm::dvec3& p) {
     const glm::dvec3 to_light = light.is_directional() ? -glm::normalize(light.direction) : light.position - p;
     glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
     if (glm::dot(normal, to_light) < 0.0) normal = -normal;
-    const glm::dvec3 origin = p + offset * normal;
+    const glm::dvec3 origin = p + surface_offset(triangle, p) * normal;
     if (light.is_directional()) return !tracer.blocked(origin, to_light, std::numeric_limits<double>::infinity());
     return !tracer.blocked(origin, light.position - origin, 1.0);  // t = 1 at the light
 }
@@ -53,9 +81,12 @@ double facing_light(const Light& light, const std::array<glm::dvec3, 3>& triangl
 }  // namespace
 
 ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height) {
-    const RayTracer tracer(triangles, caster_flags(scene));
-    const double offset = kRelativeOffset * largest_coordinate(triangles.vertices);
     const Camera& camera = scene.camera;
+    const glm::dvec3 origin = camera.position;  // the tracer's: the eye at 0
+    const WorldTriangles local = rebased(triangles, origin);
+    const RayTracer tracer(local, caster_flags(scene));
+    Light local_light = scene.light;
+    local_light.position -= origin;
     const CameraRays rays(camera, width, height);
 
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
@@ -64,15 +95,18 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
                          std::vector<float>(pixels, 0.0f)};
     auto trace_row = [&](int y) {
         for (int x = 0; x < width; ++x) {
-            const std::optional<Hit> hit = tracer.first_hit(camera.position, rays.direction(x, y), camera.near, camera.far);
+            const glm::dvec3 direction = rays.direction(x, y);
+            const std::optional<Hit> hit = tracer.first_hit(glm::dvec3(0.0), direction, camera.near, camera.far);
             if (!hit) continue;
             const std::array<glm::dvec3, 3> triangle = corners(triangles, hit->triangle);
-            const glm::dvec3 p = (1.0 - hit->u - hit->v) * triangle[0] + hit->u * triangle[1] + hit->v * triangle[2];
+            const std::array<glm::dvec3, 3> local_triangle = corners(local, hit->triangle);
+            const glm::dvec3 local_p = on_plane(local_triangle, direction);
+            const glm::dvec3 p = origin + local_p;
             const std::size_t i = static_cast<std::size_t>(y) * width + x;
             image.position[i] = p;
             image.object[i] = triangles.object[hit->triangle];
             image.visible[i] = 1;
-            image.lit[i] = sees_light(tracer, scene.light, triangle, p, offset);
+            image.lit[i] = sees_light(tracer, local_light, local_triangle, local_p);
             image.facing[i] = float(facing_light(scene.light, triangle, p, camera.position));
         }
     };

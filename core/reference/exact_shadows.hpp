@@ -23,9 +23,10 @@ struct ReferenceImage {
 // One primary ray through each pixel centre of the camera's projection (width x height pixels
 // spanning its full field of view), then a shadow ray from the visible point toward the light:
 // along -direction to infinity for a directional light, up to the position for spot and point
-// lights (the spot's cone is not applied). The shadow ray starts a small offset (1e-5 of the
-// scene's largest coordinate) off the surface, along the triangle's normal turned toward the
-// light, so that its own triangle never blocks it; a closed object still shadows its faces
+// lights (the spot's cone is not applied). Rays are traced in camera-relative coordinates, so the
+// verdicts do not change when the scene is moved far from the origin. The shadow ray starts a
+// small offset off the surface (64 float32 steps of the local coordinates), along the triangle's
+// normal turned toward the light, so that its own triangle never blocks it; a closed object still shadows its faces
 // turned from the light (the ray crosses the object), while a lone plane seen from its side away
 // from the light counts as lit: the test is occlusion, as a shadow map sees it, not shading.
 ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height);

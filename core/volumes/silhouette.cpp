@@ -7,8 +7,13 @@
 
 namespace shadowlab {
 
+// Relative to the triangle's first corner: the plane's determinants then multiply the triangle's
+// own small numbers, and a scene far from the origin keeps its signs.
 double light_facing(const std::array<glm::dvec3, 3>& c, const glm::dvec4& light) {
-    return glm::dot(plane_through(glm::dvec4(c[0], 1.0), glm::dvec4(c[1], 1.0), glm::dvec4(c[2], 1.0)), light);
+    const glm::dvec4 local_light = light - glm::dvec4(c[0] * light.w, 0.0);
+    return glm::dot(plane_through(glm::dvec4(0.0, 0.0, 0.0, 1.0), glm::dvec4(c[1] - c[0], 1.0),
+                                  glm::dvec4(c[2] - c[0], 1.0)),
+                    local_light);
 }
 
 namespace {

@@ -52,20 +52,27 @@ std::optional<double> crossing(const EyePolygon& p, const glm::dvec3& d) {
 
 }  // namespace
 
+// Counted in eye-relative coordinates: the planes through the eye and each edge are then built from
+// small numbers, and the verdicts do not change when the scene stands far from the origin.
 StencilCounts count_stencil(const ShadowVolume& volume, const Camera& camera, const ReferenceImage& image,
                             CountRule drawn) {
-    const CameraRays rays(camera, image.width, image.height);
-    const glm::dmat4 world_to_clip = camera.infinite_projection_matrix() * camera.view_matrix();
+    Camera eye_camera = camera;
+    eye_camera.position = glm::dvec3(0.0);
+    eye_camera.target = camera.target - camera.position;
+    const CameraRays rays(eye_camera, image.width, image.height);
+    const glm::dmat4 eye_to_clip = eye_camera.infinite_projection_matrix() * eye_camera.view_matrix();
     std::vector<EyePolygon> polygons;
     std::vector<PixelBox> boxes;
     auto add = [&](const std::vector<VolumePolygon>& list, bool is_drawn) {
-        for (const VolumePolygon& p : list)
+        for (VolumePolygon p : list) {
+            p.vertices = translated(std::move(p.vertices), -camera.position);
             if (std::optional<EyePolygon> seen = seen_from(p, rays.eye(), is_drawn)) {
-                const PixelBox box = pixel_footprint(world_to_clip, rays, p.vertices);
+                const PixelBox box = pixel_footprint(eye_to_clip, rays, p.vertices);
                 if (box.empty()) continue;
                 polygons.push_back(std::move(*seen));
                 boxes.push_back(box);
             }
+        }
     };
     add(volume.quads, true);
     add(volume.front_cap, drawn == CountRule::zfail);  // z-pass draws no caps (Heidmann)
@@ -80,7 +87,7 @@ StencilCounts count_stencil(const ShadowVolume& volume, const Camera& camera, co
         if (p.drawn) c.fragments[i] += p.multiplicity;
         if (!image.visible[i]) return;
         const bool front = p.plane_at_eye > 0.0;
-        if (*t >= rays.view_depth(image.position[i]) * (1.0 - kSameDepth))
+        if (*t >= rays.view_depth(image.position[i] - camera.position) * (1.0 - kSameDepth))
             c.zfail[i] += front ? -p.multiplicity : p.multiplicity;  // depth test fails: behind
         else
             c.zpass[i] += front ? p.multiplicity : -p.multiplicity;  // depth test passes: in front
