@@ -1,7 +1,7 @@
 #pragma once
 // `shadowlab bench SCENE... [--methods a,b] [--resolutions 256,512,...] [--size WxH] --out DIR`:
-// every method at every resolution on every scene; DIR/bench.csv and DIR/bench.png (error against
-// cost, one line per method).
+// every method at every resolution on every scene; DIR/bench.csv, DIR/bench.png (error against
+// cost, one line per method) and DIR/bench_aliasing.png (max perspective m against cost).
 #include <string>
 #include <vector>
 

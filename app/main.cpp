@@ -98,6 +98,9 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--size", render_size, "image size WxH")->capture_default_str();
     render_cmd->add_option("--resolution,-r", render.resolution, "shadow map resolution")->capture_default_str();
     render_cmd->add_option("--bias", render.bias, "depth bias in world units along the light (default: slope-scaled per pixel)");
+    render_cmd->add_option("--aliasing", render.aliasing,
+                           "the Error view's heat map: total (m) | perspective | projection (its factors)")
+        ->capture_default_str();
     render_cmd->add_option("--set", render_pairs, "a method setting, key=value (repeatable)");
     render_cmd->add_option("--out,-o", render.out, "PNG file to write")->required();
 

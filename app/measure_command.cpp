@@ -6,10 +6,17 @@
 
 #include "io/inspection_json.hpp"
 #include "limits.hpp"
+#include "scene/image_size.hpp"
 #include "metrics/measurement.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace shadowlab {
+
+namespace {
+
+Json to_json(const AliasingStats& s) { return {{"max", s.max}, {"mean", s.mean}, {"p95", s.p95}}; }
+
+}  // namespace
 
 Json to_json(const Measurement& m) {
     const ShadowError& e = m.error;
@@ -18,8 +25,10 @@ Json to_json(const Measurement& m) {
             {"misclassified", e.misclassified},
             {"false_shadow", e.false_shadow},
             {"false_light", e.false_light},
-            {"m", {{"max", e.m.max}, {"mean", e.m.mean}, {"p95", e.m.p95}}},
-            {"depth_step", {{"max", e.depth_step.max}, {"mean", e.depth_step.mean}, {"p95", e.depth_step.p95}}},
+            {"m", to_json(e.m)},
+            {"m_perspective", to_json(e.m_perspective)},
+            {"m_projection", to_json(e.m_projection)},
+            {"depth_step", to_json(e.depth_step)},
             {"setup_ms", m.setup_ms},
             {"raster_ms", m.raster_ms},
             {"fallback", m.fallbacks.empty() ? Json(nullptr) : Json(describe(m.fallbacks))},
@@ -37,13 +46,18 @@ Json to_json(const Measurement& m) {
 
 namespace {
 
-void print_text(const MeasureOptions& o, const Measurement& m) {
+std::ostream& operator<<(std::ostream& out, const AliasingStats& s) {
+    return out << "max " << s.max << ", mean " << s.mean << ", p95 " << s.p95;
+}
+
+// `image`: the camera image measured (the camera's aspect within --size).
+void print_text(const Measurement& m, const glm::ivec2& image) {
     const ShadowError& e = m.error;
     std::cout << "method " << m.method;
     if (m.geometry)
-        std::cout << " (geometry, no map), image " << o.width << "x" << o.height << "\n";
+        std::cout << " (geometry, no map), image " << image.x << "x" << image.y << "\n";
     else
-        std::cout << " at " << m.resolution << "^2, image " << o.width << "x" << o.height << ", bias "
+        std::cout << " at " << m.resolution << "^2, image " << image.x << "x" << image.y << ", bias "
                   << (m.bias >= 0.0 ? std::to_string(m.bias) : std::string("slope-scaled")) << "\n";
     std::cout << "  misclassified " << 100 * e.misclassified << "% of " << e.receiver_pixels
               << " receiver pixels (false shadow " << 100 * e.false_shadow << "%, false light " << 100 * e.false_light
@@ -52,9 +66,10 @@ void print_text(const MeasureOptions& o, const Measurement& m) {
         std::cout << "  polygons " << m.geometry->polygons << ", fill (fragments per pixel): mean "
                   << m.geometry->fill_mean << ", max " << m.geometry->fill_max << "\n";
     else
-        std::cout << "  m (texel extent in pixels): max " << e.m.max << ", mean " << e.m.mean << ", p95 " << e.m.p95
-                  << "\n  depth step of a 24-bit map (world units): max " << e.depth_step.max << ", mean "
-                  << e.depth_step.mean << ", p95 " << e.depth_step.p95 << "\n";
+        std::cout << "  m (texel extent in pixels): " << e.m
+                  << "\n    perspective factor (the parameterization's part): " << e.m_perspective
+                  << "\n    projection factor (the surface's tilt): " << e.m_projection
+                  << "\n  depth step of a 24-bit map (world units): " << e.depth_step << "\n";
     std::cout << "  cost: setup " << m.setup_ms << " ms, raster " << m.raster_ms << " ms, total "
               << m.setup_ms + m.raster_ms << " ms\n";
     if (m.geometry)
@@ -77,8 +92,11 @@ MeasureContext prepare_with_progress(const std::string& scene_file, int width, i
     limits::check(limits::image_side, "--size width", width);
     limits::check(limits::image_side, "--size height", height);
     const Scene scene = load_scene(scene_file);
-    std::cerr << "measure: exact reference of " << scene_file << " (" << width << "x" << height << ", Embree rays)..."
-              << std::flush;
+    const glm::ivec2 image = image_size_within(scene.camera, width, height);
+    std::cerr << "measure: exact reference of " << scene_file << " (" << image.x << "x" << image.y;
+    if (image != glm::ivec2(width, height))
+        std::cerr << ": the camera's aspect " << scene.camera.aspect << " within " << width << "x" << height;
+    std::cerr << ", Embree rays)..." << std::flush;
     const auto start = std::chrono::steady_clock::now();
     MeasureContext context = prepare_measurement(scene, width, height);
     std::cerr << " " << std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()
@@ -101,10 +119,13 @@ void run_measure(const MeasureOptions& o) {
     if (method.makes_maps()) std::cerr << " at " << o.resolution << "^2";
     std::cerr << "...\n";
     const Measurement m = measure(context, method, settings, o.resolution, o.bias);
-    if (o.json)
-        std::cout << to_json(m).dump(1) << "\n";
-    else
-        print_text(o, m);
+    if (o.json) {
+        Json json = to_json(m);
+        json["image"] = {context.reference.width, context.reference.height};  // the size the camera's aspect left
+        std::cout << json.dump(1) << "\n";
+    } else {
+        print_text(m, {context.reference.width, context.reference.height});
+    }
 }
 
 }  // namespace shadowlab

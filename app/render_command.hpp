@@ -1,5 +1,6 @@
 #pragma once
-// `shadowlab render SCENE --method M [--view V] [--step ID] [--size WxH] [--resolution N] [--bias B] --out FILE.png`
+// `shadowlab render SCENE --method M [--view V] [--step ID] [--size WxH] [--resolution N] [--bias B]
+//  [--aliasing total|perspective|projection] --out FILE.png`
 #include <map>
 #include <string>
 
@@ -14,6 +15,7 @@ struct RenderOptions {
     int width = 1280, height = 720;
     int resolution = 2048;
     double bias = -1.0;  // world units along the light; < 0: automatic
+    std::string aliasing = "total";  // the Error view's heat map: m, or its perspective or projection factor
     std::string out;
 };
 

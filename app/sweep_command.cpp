@@ -62,7 +62,8 @@ void run_sweep(const SweepOptions& o) {
     const std::filesystem::path dir(o.out_dir);
     std::ofstream csv(dir / "sweep.csv");
     if (!csv) throw std::runtime_error((dir / "sweep.csv").string() + ": cannot write");
-    csv << "quantity,value,method,misclassified,false_shadow,false_light,m_mean,m_p95,fallback\n";
+    csv << "quantity,value,method,misclassified,false_shadow,false_light,m_mean,m_p95,m_perspective_max,"
+           "m_perspective_mean,m_perspective_p95,fallback\n";
 
     auto sweep = [&](const std::string& quantity, const std::vector<double>& values, auto scene_at) {
         SweepSeries s{quantity, values, std::vector<std::vector<Measurement>>(methods.size())};
@@ -72,9 +73,11 @@ void run_sweep(const SweepOptions& o) {
             for (size_t k = 0; k < methods.size(); ++k) {
                 const Settings settings = resolve_settings(methods[k]->name, methods[k]->settings, {});
                 const Measurement m = measure(context, *methods[k], settings, o.resolution, -1.0);
-                csv << quantity << ',' << values[i] << ',' << m.method << ',' << m.error.misclassified << ','
-                    << m.error.false_shadow << ',' << m.error.false_light << ',' << m.error.m.mean << ','
-                    << m.error.m.p95 << ",\"" << describe(m.notes()) << "\"\n";
+                const ShadowError& e = m.error;
+                csv << quantity << ',' << values[i] << ',' << m.method << ',' << e.misclassified << ','
+                    << e.false_shadow << ',' << e.false_light << ',' << e.m.mean << ',' << e.m.p95 << ','
+                    << e.m_perspective.max << ',' << e.m_perspective.mean << ',' << e.m_perspective.p95 << ",\""
+                    << describe(m.notes()) << "\"\n";
                 s.per_method[k].push_back(m);
             }
         }

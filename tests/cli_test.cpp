@@ -174,6 +174,32 @@ TEST(Cli, MeasurePrintsTheDocumentedObject) {
     EXPECT_GT(j["raster_ms"].get<double>(), 0.0);
     EXPECT_TRUE(j["fallback"].is_null());
     EXPECT_NE(r.err.find("measure: exact reference"), std::string::npos) << "progress on stderr";
+    // Lloyd's two factors beside m; their product is m pixel by pixel, so the perspective part,
+    // which a parameterization controls, never exceeds m.
+    for (const char* factor : {"m_perspective", "m_projection"})
+        for (const char* stat : {"max", "mean", "p95"}) EXPECT_GT(j[factor][stat].get<double>(), 0.0) << factor << stat;
+    EXPECT_LE(j["m_perspective"]["max"].get<double>(), j["m"]["max"].get<double>());
+    EXPECT_EQ(j["image"], nlohmann::json({320, 180}));
+}
+
+// One aspect rule: an image asked in another shape keeps the camera's aspect, so a square camera
+// measured at 1280x720 and at 720x720 is the same 720x720 image with the same m per pixel.
+TEST(Cli, MeasureKeepsTheCamerasAspect) {
+    const std::string square = ::testing::TempDir() + "square_camera.json";
+    {
+        nlohmann::json scene = nlohmann::json::parse(slurp(source_path("data/scenes/box_on_plane.json")));
+        scene["camera"]["aspect"] = 1.0;
+        std::ofstream(square) << scene.dump();
+    }
+    auto measured = [&](const std::string& size) {
+        const CliResult r = run_cli("measure " + square + " --method focused --resolution 512 --size " + size + " --json");
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return nlohmann::json::parse(r.out);
+    };
+    const nlohmann::json wide = measured("1280x720"), square_image = measured("720x720");
+    EXPECT_EQ(wide["image"], nlohmann::json({720, 720}));
+    EXPECT_EQ(wide["m"], square_image["m"]);
+    EXPECT_EQ(wide["misclassified"], square_image["misclassified"]);
 }
 
 TEST(Cli, MeasureRejectsBadArguments) {

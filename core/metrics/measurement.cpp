@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "math/stopwatch.hpp"
+#include "scene/image_size.hpp"
 
 namespace shadowlab {
 namespace {
@@ -51,7 +52,8 @@ Measurement measure_geometry(const MeasureContext& c, const Method& method, cons
 
 MeasureContext prepare_measurement(const Scene& scene, int width, int height) {
     MeasureContext c{scene, object_boxes(scene), tessellate(scene), caster_flags(scene), {}};
-    c.reference = exact_reference(scene, c.triangles, width, height);
+    const glm::ivec2 image = image_size_within(scene.camera, width, height);
+    c.reference = exact_reference(scene, c.triangles, image.x, image.y);
     return c;
 }
 

@@ -20,6 +20,8 @@ struct MeasureContext {
     ReferenceImage reference;
 };
 
+// The reference of the largest image of the camera's aspect within width x height (image_size_within):
+// context.reference.width and .height say which.
 MeasureContext prepare_measurement(const Scene& scene, int width, int height);
 
 struct Measurement {

@@ -20,12 +20,33 @@ struct ShadowError {
     // Shares of receiver pixels: false shadow (acne: the map shadows a lit point) and false light
     // (leaks, peter panning: the map lights a shadowed point); misclassified is their sum.
     double misclassified = 0.0, false_shadow = 0.0, false_light = 0.0;
-    // Lloyd's m: the longest extent of one map texel projected into the image, in pixels.
-    AliasingStats m;
+    // Lloyd's m: the longest extent of one map texel projected into the image, in pixels. Lloyd,
+    // Tuft, Yoon and Manocha (2006) split it as m = perspective × projection: a texel's width
+    // across the light against a pixel's width across the view ray (perspective aliasing, which a
+    // parameterization sets) times cos φ_eye / cos φ_light, φ the angles between the surface's
+    // normal and the eye and the light (projection aliasing, which the surface sets). Per pixel,
+    // with the same measure:
+    //   m_perspective = m on the plane through the point facing halfway between the eye and the
+    //                   light (normal ∝ to_eye + to_light): there cos φ_eye = cos φ_light and the
+    //                   surface drops out (see pixel_aliasing in shadow_error.cpp);
+    //   m_projection  = m / m_perspective: what the real surface's orientation adds. It lies
+    //                   between the two stretches the surface's tilt (against the halfway plane's)
+    //                   gives a texel's image, which depend on the normal, the light and the view
+    //                   ray alone: 1 and Lloyd's cos φ_eye / cos φ_light where the three lie in one
+    //                   plane, his ratio itself where the texel is longest in that plane (up to
+    //                   the pixel footprint's slight anisotropy off the image centre). Where in
+    //                   that range a pixel falls depends on the way its texel is longest, so maps
+    //                   differ in it; it is 1 on a face turned to both the eye and the light, and
+    //                   without bound on faces edge-on to the light.
+    // m_perspective × m_projection = m at every pixel where the factors are measured. (m's 2D
+    // measure does not split into a map's part and a surface's part exactly; this split keeps the
+    // product and gives the map's part alone to m_perspective.)
+    AliasingStats m, m_perspective, m_projection;
     // Depth resolution: the world distance along the light that one step of a 24-bit depth buffer
     // stands for at each judged pixel (max, mean, 95th percentile).
     AliasingStats depth_step;
-    std::vector<float> m_image;           // per pixel; 0 where not measured
+    // Per pixel; 0 where not measured.
+    std::vector<float> m_image, m_perspective_image, m_projection_image;
     std::vector<PixelVerdict> verdicts;   // per pixel
 };
 

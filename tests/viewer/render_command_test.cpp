@@ -2,7 +2,9 @@
 // shadows; a bad view is refused by name.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
@@ -54,4 +56,25 @@ TEST(RenderCommand, UnknownViewIsRefusedByName) {
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("--view: unknown view 'sideways'"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists("/tmp/never.png"));
+}
+
+// The Camera view keeps the scene camera's aspect: asked for 320x180, a square camera's picture is
+// 180x180 (and says so); views that are not the camera's picture fill the asked size.
+TEST(RenderCommand, CameraViewKeepsTheCamerasAspect) {
+    const std::string square = ::testing::TempDir() + "square_render.json";
+    {
+        nlohmann::json json = nlohmann::json::parse(shadowlab::testing::slurp(scene("box_on_plane.json")));
+        json["camera"]["aspect"] = 1.0;
+        std::ofstream(square) << json.dump();
+    }
+    const std::string out = ::testing::TempDir() + "square_" + std::to_string(getpid()) + ".png";
+    for (const auto& [view, width, height] : {std::tuple{"camera", 180, 180}, std::tuple{"world", 320, 180}}) {
+        const auto r = run_cli("render " + square + " --view " + view + " --size 320x180 --resolution 256 --out " + out);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const RgbImage image = read_png(out);
+        EXPECT_EQ(image.width, width) << view;
+        EXPECT_EQ(image.height, height) << view;
+        EXPECT_NE(r.err.find(std::to_string(width) + "x" + std::to_string(height)), std::string::npos) << r.err;
+    }
+    std::filesystem::remove(out);
 }

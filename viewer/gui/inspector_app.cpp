@@ -19,7 +19,7 @@ int run_inspector(int argc, char** argv, const InspectorOptions& options) {
     MainWindow window;
     window.resize(options.width, options.height);
     window.show();
-    QApplication::processEvents();  // lay out first: the Camera view's shape is the camera's aspect
+    QApplication::processEvents();  // lay out first: the panels draw at their size
     window.open_file(QString::fromStdString(options.scene_file));
     if (!options.screenshot.empty()) {
         QTimer::singleShot(500, &window, [&] {

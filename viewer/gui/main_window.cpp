@@ -178,8 +178,6 @@ bool MainWindow::open_file(const QString& path) {
 
 void MainWindow::recompute() {
     if (scene_.objects.empty()) return;
-    for (ViewPanel* panel : panels_)  // the camera's image is the Camera view's picture
-        if (panel->view() == ViewKind::camera && panel->picture_aspect()) scene_.camera.aspect = *panel->picture_aspect();
     const InspectionRequest request = controls_->request();
     try {
         const BusyNotice busy(statusBar(), QString::fromStdString("computing " + request.method));

@@ -28,16 +28,18 @@ bool PlotPanel::update_plot(const Scene& scene, const std::string& method_name,
     ChartSpec chart;
     chart.title = method_name + ": error against map resolution";
     chart.x_title = "map resolution (texels per side)";
-    chart.y_title = "misclassified % / max m (px)";
+    chart.y_title = "misclassified % / max perspective m (px)";
     chart.log_x = chart.log_y = true;
     chart.width = 520;
     chart.height = 320;
     ChartSeries wrong{"misclassified %", {}, {}, {}, true, {}, {}};
-    ChartSeries m{"max m (texel size in pixels)", {}, {}, {}, true, {}, {}};
+    // The perspective factor of m: the part a parameterization (and its resolution) controls; m's
+    // own max is set by faces edge-on to the light, whatever the map.
+    ChartSeries m{"max perspective m (texel width in pixels)", {}, {}, {}, true, {}, {}};
     for (int resolution : {256, 512, 1024, 2048}) {
         const Measurement r = measure(context, *method, settings, resolution, -1.0);
         wrong.x.push_back(resolution), wrong.y.push_back(std::max(1e-3, 100.0 * r.error.misclassified));
-        m.x.push_back(resolution), m.y.push_back(std::max(1e-3, r.error.m.max));
+        m.x.push_back(resolution), m.y.push_back(std::max(1e-3, r.error.m_perspective.max));
     }
     chart.series = {wrong, m};
     const QString file = QDir::temp().filePath("shadowlab-plot.png");

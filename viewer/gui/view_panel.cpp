@@ -1,6 +1,7 @@
 #include "gui/view_panel.hpp"
 
 #include <QComboBox>
+#include <QHBoxLayout>
 #include <QImage>
 #include <QVBoxLayout>
 #include <glm/gtc/type_ptr.hpp>
@@ -18,13 +19,28 @@
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
+#include "scene/image_size.hpp"
+
 namespace shadowlab {
 
 ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
-    : QWidget(parent), chooser_(new QComboBox(this)), widget_(new QVTKOpenGLNativeWidget(this)) {
+    : QWidget(parent),
+      chooser_(new QComboBox(this)),
+      aliasing_(new QComboBox(this)),
+      widget_(new QVTKOpenGLNativeWidget(this)) {
     for (ViewKind v : all_views()) chooser_->addItem(view_title(v), static_cast<int>(v));
     chooser_->setObjectName("viewChooser");
+    aliasing_->addItem("m", static_cast<int>(AliasingShown::total));
+    aliasing_->addItem("m: perspective factor", static_cast<int>(AliasingShown::perspective));
+    aliasing_->addItem("m: projection factor", static_cast<int>(AliasingShown::projection));
+    aliasing_->setObjectName("aliasingChooser");
+    aliasing_->setToolTip("Lloyd's m, or its part a parameterization sets (perspective) or the surface's tilt sets "
+                          "(projection)");
+    // Only the Error view paints aliasing: the second chooser shows with it, however it was chosen.
+    const auto show_aliasing_with_error_view = [this] { aliasing_->setVisible(view() == ViewKind::error); };
+    connect(chooser_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, show_aliasing_with_error_view);
     set_view(initial);
+    show_aliasing_with_error_view();
     vtkNew<vtkGenericOpenGLRenderWindow> window;
     window_ = window;
     window_->SetStencilCapable(1);  // the stencil shadow pass (before the first render)
@@ -33,9 +49,13 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
-    layout->addWidget(chooser_);
+    auto* choosers = new QHBoxLayout;
+    choosers->addWidget(chooser_, 1);
+    choosers->addWidget(aliasing_);
+    layout->addLayout(choosers);
     layout->addWidget(widget_, 1);
     connect(chooser_, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
+    connect(aliasing_, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
 
     // The end of a drag in the Camera view moves the scene's camera.
     vtkNew<vtkCallbackCommand> on_end;
@@ -52,9 +72,12 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     window_->GetRenderers()->RemoveAllItems();
     vtkNew<vtkRenderer> renderer;
     window_->AddRenderer(renderer);
+    scene_renderer_ = renderer;
+    if (view() == ViewKind::camera) letterbox(renderer, inspection.scene.camera);
     ViewOptions sized = options;
     sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
     sized.height = std::max(36, static_cast<int>(sized.width / inspection.scene.camera.aspect));
+    sized.aliasing = static_cast<AliasingShown>(aliasing_->currentData().toInt());
     const ViewReport report = build_view(renderer, inspection, view(), sized);
     const bool image = view() == ViewKind::shadow_map || view() == ViewKind::error || view() == ViewKind::stencil;
     if (image)
@@ -84,7 +107,7 @@ void ViewPanel::add_world_handles(const Inspection& in) {
         auto handle = vtkSmartPointer<vtkHandleWidget>::New();
         handle->SetInteractor(window_->GetInteractor());
         handle->SetRepresentation(representation);
-        handle->SetCurrentRenderer(window_->GetRenderers()->GetFirstRenderer());
+        handle->SetCurrentRenderer(scene_renderer_);
         handle->EnabledOn();
         vtkNew<vtkCallbackCommand> on_end;
         on_end->SetClientData(this);
@@ -102,18 +125,38 @@ void ViewPanel::add_world_handles(const Inspection& in) {
 
 void ViewPanel::report_camera() {
     if (view() != ViewKind::camera) return;
-    vtkRenderer* renderer = window_->GetRenderers()->GetFirstRenderer();
-    if (!renderer) return;
-    vtkCamera* c = renderer->GetActiveCamera();
+    if (!scene_renderer_) return;
+    vtkCamera* c = scene_renderer_->GetActiveCamera();
     const double* p = c->GetPosition();
     const double* f = c->GetFocalPoint();
     const double* u = c->GetViewUp();
     emit cameraMoved({p[0], p[1], p[2]}, {f[0], f[1], f[2]}, {u[0], u[1], u[2]});
 }
 
-std::optional<double> ViewPanel::picture_aspect() const {
-    if (widget_->width() < 16 || widget_->height() < 16) return std::nullopt;
-    return static_cast<double>(widget_->width()) / widget_->height();
+// The Camera view keeps the scene camera's aspect (the matrices the window computes are the CLI's):
+// before each render its renderer takes the largest box of that shape in the panel, centred, over
+// a dark backdrop on the layer below.
+void ViewPanel::letterbox(vtkRenderer* renderer, const Camera& camera) {
+    vtkNew<vtkRenderer> backdrop;
+    backdrop->SetBackground(0.12, 0.13, 0.16);
+    backdrop->InteractiveOff();
+    window_->SetNumberOfLayers(2);
+    window_->AddRenderer(backdrop);
+    renderer->SetLayer(1);
+    renderer->SetPreserveColorBuffer(0);  // it clears its own box
+    renderer->SetPreserveDepthBuffer(0);
+    vtkNew<vtkCallbackCommand> fit;
+    fit->SetClientData(new Camera(camera));
+    fit->SetClientDataDeleteCallback([](void* data) { delete static_cast<Camera*>(data); });
+    fit->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+        auto* r = static_cast<vtkRenderer*>(caller);
+        const int* size = r->GetRenderWindow()->GetSize();
+        if (size[0] < 1 || size[1] < 1) return;
+        const glm::ivec2 box = image_size_within(*static_cast<Camera*>(data), size[0], size[1]);
+        const double x = 0.5 * (1.0 - double(box.x) / size[0]), y = 0.5 * (1.0 - double(box.y) / size[1]);
+        r->SetViewport(x, y, 1.0 - x, 1.0 - y);
+    });
+    renderer->AddObserver(vtkCommand::StartEvent, fit);
 }
 
 RgbImage ViewPanel::grab() {

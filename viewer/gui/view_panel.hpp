@@ -1,5 +1,6 @@
 #pragma once
-// One view of the window: a chooser for which view it shows, over a VTK widget drawing it.
+// One view of the window: a chooser for which view it shows (and, for the Error view, which
+// aliasing its heat map paints), over a VTK widget drawing it.
 #include <optional>
 #include <vector>
 #include <QWidget>
@@ -12,6 +13,7 @@ class QComboBox;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
 class vtkHandleWidget;
+class vtkRenderer;
 
 namespace shadowlab {
 
@@ -25,7 +27,6 @@ public:
     // Redraws from the inspection; returns what the view could not draw.
     ViewReport show(const Inspection& inspection, const ViewOptions& options);
     RgbImage grab();  // what the panel shows now
-    std::optional<double> picture_aspect() const;  // width / height of the drawing, once laid out
 
 signals:
     void viewChosen();
@@ -39,11 +40,14 @@ signals:
 private:
     void report_camera();
     void add_world_handles(const Inspection& inspection);
+    void letterbox(vtkRenderer* renderer, const Camera& camera);
 
     std::vector<vtkSmartPointer<vtkHandleWidget>> handles_;
     QComboBox* chooser_;
+    QComboBox* aliasing_;  // the Error view's heat map: m or one of its factors
     QVTKOpenGLNativeWidget* widget_;
     vtkGenericOpenGLRenderWindow* window_;
+    vtkRenderer* scene_renderer_ = nullptr;  // the view's own, the first of the window's renderers
 };
 
 }  // namespace shadowlab

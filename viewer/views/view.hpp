@@ -20,10 +20,14 @@ const std::vector<ViewKind>& all_views();
 // Does the view draw the chosen trace step (World, Light space, PPLS)? The others do not change with it.
 bool shows_steps(ViewKind view);
 
+// Which aliasing the Error view paints: Lloyd's m, or one of its two factors (ShadowError).
+enum class AliasingShown { total, perspective, projection };
+
 struct ViewOptions {
     std::string step;       // the trace step to highlight; empty: the method's last step
     bool lit_mask = false;  // camera view: white where lit, black where shadowed, unlit colours
     int width = 0, height = 0;  // error view: the camera image it measures (0: 640 x 640 / aspect)
+    AliasingShown aliasing = AliasingShown::total;  // error view: the heat map's quantity
 };
 
 // What a view could not draw, for the window's status line: "12 triangles behind w = 0 left out".
