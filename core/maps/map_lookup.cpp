@@ -146,6 +146,18 @@ glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::d
     return (glm::dvec2(dh) * h.w - glm::dvec2(h) * dh.w) / (h.w * h.w);
 }
 
+ShadowSetup relative_to(ShadowSetup setup, const glm::dvec3& origin) {
+    glm::dmat4 world_from_local(1.0);
+    world_from_local[3] = glm::dvec4(origin, 1.0);
+    for (ShadowMap& map : setup.maps) {
+        map.world_to_uvz = map.world_to_uvz * world_from_local;
+        map.paraboloid.centre -= origin;
+    }
+    setup.selection.eye -= origin;
+    setup.selection.centre -= origin;
+    return setup;
+}
+
 double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
     double slope = 0.0;
     if (map.projection == Projection::paraboloid) {  // d = (|q| - near) / (far - near)

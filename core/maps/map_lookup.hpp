@@ -55,6 +55,10 @@ std::optional<MapLookup> look_up(const ShadowSetup& setup, const glm::dvec3& wor
 // the centre for a paraboloid; no step tied to the scene's extent or position.
 glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::dvec3& direction);
 
+// The same setup for points given relative to `origin` (p - origin): what a float32 consumer (the GPU
+// passes) draws with near the camera, however far the scene stands from the world's origin.
+ShadowSetup relative_to(ShadowSetup setup, const glm::dvec3& origin);
+
 // World units along the light per unit at p under one map: 1 / (dd / dt), d the
 // divided depth, t the distance along `light_direction`.
 double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& light_direction, const glm::dvec3& p);

@@ -73,6 +73,7 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     vtkNew<vtkRenderer> renderer;
     window_->AddRenderer(renderer);
     scene_renderer_ = renderer;
+    camera_origin_ = inspection.scene.camera.position;  // the Camera view draws relative to it
     if (view() == ViewKind::camera) letterbox(renderer, inspection.scene.camera);
     ViewOptions sized = options;
     sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
@@ -130,7 +131,8 @@ void ViewPanel::report_camera() {
     const double* p = c->GetPosition();
     const double* f = c->GetFocalPoint();
     const double* u = c->GetViewUp();
-    emit cameraMoved({p[0], p[1], p[2]}, {f[0], f[1], f[2]}, {u[0], u[1], u[2]});
+    emit cameraMoved(camera_origin_ + glm::dvec3(p[0], p[1], p[2]), camera_origin_ + glm::dvec3(f[0], f[1], f[2]),
+                     {u[0], u[1], u[2]});
 }
 
 // The Camera view keeps the scene camera's aspect (the matrices the window computes are the CLI's):

@@ -48,6 +48,7 @@ private:
     QVTKOpenGLNativeWidget* widget_;
     vtkGenericOpenGLRenderWindow* window_;
     vtkRenderer* scene_renderer_ = nullptr;  // the view's own, the first of the window's renderers
+    glm::dvec3 camera_origin_{0.0};          // the Camera view's coordinates are relative to it
 };
 
 }  // namespace shadowlab

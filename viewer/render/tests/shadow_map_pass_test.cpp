@@ -81,6 +81,23 @@ TEST_P(GpuAgreesWithCpu, OnVisiblePixelsAwayFromShadowEdges) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuAgreesWithCpu, ::testing::Values("box_on_plane", "default", "spot"));
 
+// A million units from the origin float32 world coordinates step by 0.06 units: the Camera view
+// draws relative to the eye, so the GPU still agrees with the CPU there (issue 11).
+TEST(GpuAgreesWithCpuFarFromTheOrigin, OnTheSpotScene) {
+    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/spot.json");
+    scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
+    const glm::dvec3 offset(1e6, 0.0, -1e6);
+    for (SceneObject& o : scene.objects) o.position += offset;
+    scene.camera.position += offset;
+    scene.camera.target += offset;
+    scene.light.position += offset;
+    for (const std::string method : {"focused", "lispsm"}) {
+        const Agreement a = gpu_against_cpu_lookup(inspect(scene, method, 1024), kWidth, kHeight);
+        ASSERT_GT(a.compared, kWidth * kHeight / 4u);
+        EXPECT_GE(a.share(), 0.995) << method << ": " << a.compared - a.agreed << " of " << a.compared << " pixels differ";
+    }
+}
+
 // Tiles whose edges fall mid-texel are drawn where the CPU rasterizer draws them, not rounded to
 // whole texels: shifted by a fraction of a texel, they flip texels along the box's silhouette.
 class GpuAgreesWithCpuOnTiles : public ::testing::Test {
