@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libvtk9-dev libvtk9-qt-dev qtbase5-dev libgl-dev
   xvfb xauth
+  clang libclang-rt-14-dev llvm  # the sanitizer build and the fuzzer; llvm-symbolizer for their reports
 )
 
 missing=()

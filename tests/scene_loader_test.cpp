@@ -1,4 +1,5 @@
 // Scene files: loading, defaults, every rejection, meshes, shipped scenes, and the camera frustum.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -360,11 +361,28 @@ TEST(SceneRejects, MissingMeshFile) {
                   "mesh file not found: scenes/meshes/none.obj");
 }
 
-TEST(SceneRejects, UnreadableMeshFile) {
-    const fs::path mesh = write_temp("garbage.ply", "ply\nthis is not a mesh\n");
+// What follows "cannot read mesh file <path>: " when a scene names this mesh.
+std::string refusal_reason(const fs::path& mesh) {
     json scene = minimal();
     scene["objects"][0] = {{"type", "mesh"}, {"file", mesh.string()}};
-    expect_error(scene, "objects[0].file", "cannot read mesh file " + mesh.string() + ": ");
+    try {
+        parse_scene(scene.dump(), kFile);
+    } catch (const SceneError& error) {
+        const std::string prefix = "cannot read mesh file " + mesh.string() + ": ";
+        EXPECT_EQ(error.json_path(), "objects[0].file") << error.what();
+        EXPECT_EQ(error.problem().rfind(prefix, 0), 0u) << error.what();
+        return error.problem().substr(std::min(prefix.size(), error.problem().size()));
+    }
+    ADD_FAILURE() << mesh << " accepted";
+    return "";
+}
+
+TEST(SceneRejects, UnreadableMeshFileSaysWhy) {
+    // Assimp's reason when it gives one (in its words)...
+    EXPECT_FALSE(refusal_reason(write_temp("garbage.ply", "ply\nthis is not a mesh\n")).empty());
+    // ...and when it gives none (its OBJ reader takes any text and finds nothing in it), ours.
+    EXPECT_EQ(refusal_reason(write_temp("garbage.obj", "hello world\nthis is not a mesh\n")),
+              "no mesh in it (empty, or not a format Assimp recognises)");
 }
 
 TEST(SceneRejects, MeshWithoutTriangles) {
@@ -375,6 +393,27 @@ TEST(SceneRejects, MeshWithoutTriangles) {
     // Assimp itself may refuse a file without faces; either way the file is named.
     expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[0].file"); }, kFile,
                   "objects[0].file", mesh.string());
+}
+
+// A tetrahedron whose vertex `bad` (0-based, as the file lists them) is replaced.
+std::string tetrahedron_obj(int bad = -1, const std::string& replacement = "") {
+    const std::string vertices[4] = {"v -0.5 0 -0.5", "v 0.5 0 -0.5", "v 0 0 0.5", "v 0 1 0"};
+    std::string text;
+    for (int i = 0; i < 4; ++i) text += (i == bad ? replacement : vertices[i]) + "\n";
+    return text + "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+}
+
+TEST(SceneRejects, MeshWithANonFiniteVertex) {
+    // 1e39 is beyond float: Assimp reads it as inf.
+    const fs::path mesh = write_temp("inf_vertex.obj", tetrahedron_obj(3, "v 0 1e39 0"));
+    expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[2].file"); }, kFile,
+                  "objects[2].file", "mesh file " + mesh.string() + ": vertex 3 of mesh 0 is not finite: [0, inf, 0]");
+}
+
+TEST(SceneRejects, MeshWithOnlyZeroAreaTriangles) {
+    const fs::path mesh = write_temp("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n");
+    expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[0].file"); }, kFile,
+                  "objects[0].file", "no triangle with a non-zero area (2 degenerate)");
 }
 
 TEST(SceneRejects, EmptyObjects) {
@@ -403,6 +442,105 @@ TEST(SceneRejects, InMemorySceneByTheSameRules) {
     scene.objects[0] = SceneObject{};
     scene.objects[0].shape = Shape::mesh;
     expect_thrown([&] { validate_scene(scene); }, "", "objects[0].file", "mesh not loaded");
+}
+
+// ---- ranges (limits.hpp) ------------------------------------------------------------------------
+
+// The inputs that made Embree abort before the ranges: a camera far beyond float's reach, an aspect
+// of 1e-308, and a light direction of 1e308 (a direction of any finite size is a direction: it is
+// normalised without overflow).
+TEST(SceneRanges, TheInputsThatAbortedAreRefusedOrNormalised) {
+    json scene = minimal();
+    scene["camera"] = {{"position", {1e30, 0, 0}}};
+    expect_error(scene, "camera.position[0]", "expected a number within ±1e12, got 1e+30");
+
+    scene = minimal();
+    scene["camera"] = {{"aspect", 1e-308}};
+    expect_error(scene, "camera.aspect", "expected a number within [0.001, 1000], got 1e-308");
+
+    scene = minimal();
+    scene["light"]["direction"] = {1e308, -1e308, 0};
+    const glm::dvec3 direction = parse_scene(scene.dump(), kFile).light.direction;
+    EXPECT_NEAR(glm::length(direction - glm::dvec3(std::sqrt(0.5), -std::sqrt(0.5), 0)), 0.0, 1e-15);
+}
+
+TEST(SceneRanges, PositionsWithinPlusMinus1e12) {
+    json scene = minimal();
+    scene["camera"] = {{"target", {0, 0, -2e12}}};
+    expect_error(scene, "camera.target[2]", "expected a number within ±1e12, got -2000000000000");
+
+    scene = minimal();
+    scene["light"] = {{"type", "point"}, {"position", {0, 1e13, 0}}};
+    expect_error(scene, "light.position[1]", "expected a number within ±1e12, got 10000000000000");
+
+    scene = minimal();
+    scene["objects"][0]["position"] = {0, 0, 1.5e12};
+    expect_error(scene, "objects[0].position[2]", "expected a number within ±1e12, got 1500000000000");
+}
+
+TEST(SceneRanges, LengthsAndScalesWithinTheirRanges) {
+    json scene = minimal();
+    scene["objects"][0]["size"] = {1, 1e13, 1};
+    expect_error(scene, "objects[0].size[1]", "expected a number within [1e-6, 1e12], got 10000000000000");
+
+    scene = minimal();
+    scene["objects"][0] = {{"type", "plane"}, {"size", {1e-7, 1}}};
+    expect_error(scene, "objects[0].size[0]", "expected a number within [1e-6, 1e12], got 1e-07");
+
+    scene = minimal();
+    scene["objects"][0] = {{"type", "cylinder"}, {"radius", 1}, {"height", 1e-9}};
+    expect_error(scene, "objects[0].height", "expected a number within [1e-6, 1e12], got 1e-09");
+
+    scene = minimal();
+    scene["objects"][0]["scale"] = {1, 2e6, 1};
+    expect_error(scene, "objects[0].scale[1]", "expected a number within [1e-6, 1e6], got 2000000");
+
+    scene = minimal();
+    scene["camera"] = {{"near", 1e-7}};
+    expect_error(scene, "camera.near", "expected a number within [1e-6, 1e12], got 1e-07");
+}
+
+TEST(SceneRanges, FarAtMost1e12AndAtMost1e9TimesNear) {
+    json scene = minimal();
+    scene["camera"] = {{"near", 1}, {"far", 2e9}};
+    expect_error(scene, "camera.far", "must be at most 1e9 times near (1), got 2000000000");
+
+    scene["camera"] = {{"near", 1e4}, {"far", 2e12}};
+    expect_error(scene, "camera.far", "expected a number within [1e-6, 1e12], got 2000000000000");
+}
+
+// Each field within its range, the object reaches beyond ±1e12 once placed.
+TEST(SceneRanges, EveryCornerOfAPlacedObjectWithinPlusMinus1e12) {
+    json scene = minimal();
+    scene["objects"][0]["position"] = {1e12, 0, 0};
+    expect_error(scene, "objects[0]", "expected every corner within ±1e12 once placed");
+
+    scene = minimal();
+    scene["objects"][0]["scale"] = 1e6;
+    scene["objects"][0]["size"] = {1, 1e7, 1};
+    expect_error(scene, "objects[0]", "got a corner at 5000000000000");
+}
+
+TEST(SceneRanges, TheEndsOfEveryRangeAreAccepted) {
+    json scene = minimal();
+    scene["camera"] = {{"position", {-1e12, 0, 1e12}}, {"target", {0, 0, 0}}, {"aspect", 1e-3},
+                       {"near", 1e-6}, {"far", 1}};
+    scene["objects"] = json::parse(R"([{"size": [1e-6, 1e12, 1], "scale": [1e-6, 1e-6, 1e-6]},
+                                       {"type": "sphere", "radius": 1, "scale": 1e6}])");
+    EXPECT_NO_THROW(parse_scene(scene.dump(), kFile));
+    scene["camera"]["aspect"] = 1e3;
+    scene["camera"]["near"] = 1;
+    scene["camera"]["far"] = 1e9;
+    EXPECT_NO_THROW(parse_scene(scene.dump(), kFile));
+}
+
+TEST(SceneRanges, DirectionsOfAnyFiniteNonZeroSizeAreNormalised) {
+    json scene = minimal();
+    scene["camera"] = {{"up", {0, 1e-300, 0}}};
+    scene["light"]["direction"] = {0, -5e-324, 0};
+    const Scene loaded = parse_scene(scene.dump(), kFile);
+    EXPECT_EQ(loaded.camera.up, glm::dvec3(0, 1, 0));
+    EXPECT_EQ(loaded.light.direction, glm::dvec3(0, -1, 0));
 }
 
 TEST(SceneRejects, ShippedBadFilesMatchExpectedTsv) {
@@ -446,6 +584,16 @@ TEST_P(SceneMeshFormats, LoadsTheTetrahedron) {
 
 INSTANTIATE_TEST_SUITE_P(SceneFormats, SceneMeshFormats,
                          testing::Values("obj", "ply", "stl", "gltf"));
+
+TEST(SceneMesh, ZeroAreaTrianglesAreDroppedAndCounted) {
+    // Collinear corners, and a corner repeated.
+    const fs::path path = write_temp("tetrahedron_and_slivers.obj",
+                                     tetrahedron_obj() + "v 1 0 -0.5\nf 1 2 5\nf 4 4 2\n");
+    const TriangleMesh mesh = load_triangle_mesh(path.string(), "", "file");
+    EXPECT_EQ(mesh.triangles.size(), 4u);
+    EXPECT_EQ(mesh.degenerate_dropped, 2u);
+    EXPECT_EQ(load_triangle_mesh(source_path("data/meshes/tetrahedron.obj").string(), "", "file").degenerate_dropped, 0u);
+}
 
 TEST(SceneMesh, NodeTransformsAreApplied) {
     std::ifstream in(source_path("data/meshes/tetrahedron.gltf"));

@@ -1,8 +1,12 @@
 #include "reference/ray_tracer.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <embree3/rtcore.h>
+
+#include "io/value_text.hpp"
 
 namespace shadowlab {
 namespace {
@@ -56,16 +60,41 @@ std::vector<int> triangles_where(const WorldTriangles& triangles, Predicate keep
     return out;
 }
 
+// Embree asserts (ray.valid(), an abort) on a ray whose origin or direction has a component beyond
+// FLT_LARGE (1.8e18) or whose tnear or tfar is NaN. The origin must keep clear of that bound after
+// rounding to float; the direction is rescaled below, so only its finiteness matters.
+constexpr double kLargestOrigin = 1e18;
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+// Of a finite vector (std::max passes a NaN over).
+double largest_magnitude(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+// Throws std::invalid_argument naming what is wrong with the ray, instead of handing it to Embree.
+void check_ray(const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max) {
+    const auto refuse = [](const std::string& problem) { throw std::invalid_argument("invalid ray: " + problem); };
+    if (!finite(origin) || largest_magnitude(origin) > kLargestOrigin)
+        refuse("origin " + value_text(origin) + " is not finite or beyond ±1e18, the tracer's float range");
+    if (!finite(direction)) refuse("direction " + value_text(direction) + " is not finite");
+    if (largest_magnitude(direction) == 0.0) refuse("direction is zero");
+    if (!(std::isfinite(t_min) && t_min >= 0.0 && t_max >= t_min))
+        refuse("t range " + value_text(glm::dvec2(t_min, t_max)) + " is not a finite start >= 0 and an end >= start");
+}
+
+// The direction divided by its largest |component| (t multiplied by it, so the same points are
+// meant): any finite non-zero direction then fits Embree's float range.
 RTCRay make_ray(const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max) {
+    check_ray(origin, direction, t_min, t_max);
+    const double scale = largest_magnitude(direction);
+    const glm::dvec3 unit_direction = direction / scale;
     RTCRay ray{};
     ray.org_x = static_cast<float>(origin.x);
     ray.org_y = static_cast<float>(origin.y);
     ray.org_z = static_cast<float>(origin.z);
-    ray.dir_x = static_cast<float>(direction.x);
-    ray.dir_y = static_cast<float>(direction.y);
-    ray.dir_z = static_cast<float>(direction.z);
-    ray.tnear = static_cast<float>(t_min);
-    ray.tfar = static_cast<float>(t_max);
+    ray.dir_x = static_cast<float>(unit_direction.x);
+    ray.dir_y = static_cast<float>(unit_direction.y);
+    ray.dir_z = static_cast<float>(unit_direction.z);
+    ray.tnear = static_cast<float>(t_min * scale);
+    ray.tfar = static_cast<float>(t_max * scale);
     ray.mask = ~0u;  // this Embree build tests ray masks: a zero mask would meet nothing
     return ray;
 }

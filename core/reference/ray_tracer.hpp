@@ -25,9 +25,13 @@ public:
     RayTracer& operator=(const RayTracer&) = delete;
 
     // The nearest triangle along origin + t direction, t in [t_min, t_max]. Thread-safe.
+    // A ray Embree cannot trace (an origin not finite or beyond ±1e18, a direction not finite or
+    // zero, t_min not finite and >= 0, t_max below t_min or NaN) throws std::invalid_argument
+    // naming what is wrong; a direction of any finite size is fine.
     std::optional<Hit> first_hit(const glm::dvec3& origin, const glm::dvec3& direction, double t_min,
                                  double t_max) const;
-    // Does a caster triangle meet origin + t direction, t in [0, t_max]? Thread-safe.
+    // Does a caster triangle meet origin + t direction, t in [0, t_max]? Thread-safe; throws as
+    // first_hit does.
     bool blocked(const glm::dvec3& origin, const glm::dvec3& direction, double t_max) const;
 
 private:

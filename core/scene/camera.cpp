@@ -3,9 +3,12 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "math/normalize.hpp"
+
 namespace shadowlab {
 
-glm::dmat4 Camera::view_matrix() const { return glm::lookAt(position, target, up); }
+// `up` as given (a scene built in code need not normalise it): lookAt would square it.
+glm::dmat4 Camera::view_matrix() const { return glm::lookAt(position, target, normalize_safely(up)); }
 
 glm::dmat4 Camera::projection_matrix() const {
     return glm::perspective(glm::radians(fov_y_deg), aspect, near, far);
@@ -19,7 +22,7 @@ glm::dmat4 Camera::infinite_projection_matrix() const {
 // precision when far / near is large.
 Frustum Camera::frustum() const {
     const glm::dvec3 forward = view_direction();
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, up));
+    const glm::dvec3 right = normalize_safely(glm::cross(forward, up));
     const glm::dvec3 image_up = glm::cross(right, forward);
     const double tan_y = std::tan(glm::radians(fov_y_deg) / 2.0);
     const double tan_x = tan_y * aspect;

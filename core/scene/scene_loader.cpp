@@ -16,9 +16,11 @@
 //      "size": [x,y,z] (box) or [x,z] (plane), "radius": r (sphere, cylinder),
 //      "height": h (cylinder), "file": "path relative to the scene file" (mesh, required)}]}
 //
-// Numeric rules (validate_scene): all numbers finite; sizes, radius, height, scale, aspect and
-// near positive; far > near; fov_y_deg and cone_deg in (0, 180); directions non-zero (normalised
-// after loading); camera target != position and up not parallel to the view direction.
+// Numeric rules (validate_scene; the ranges are limits.hpp's): all numbers finite; positions
+// within ±1e12, and so every corner of a placed object; sizes, radius, height, near and far in
+// [1e-6, 1e12]; scale in [1e-6, 1e6]; aspect in [1e-3, 1e3]; near < far <= 1e9 near; fov_y_deg and
+// cone_deg in (0, 180); directions non-zero (normalised after loading); camera target != position
+// and up not parallel to the view direction.
 #include "scene/scene_loader.hpp"
 
 #include <algorithm>
@@ -35,6 +37,7 @@
 #include <nlohmann/json.hpp>
 
 #include "limits.hpp"
+#include "math/normalize.hpp"
 #include "scene/scene_error.hpp"
 
 namespace shadowlab {
@@ -42,7 +45,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kMinLength = 1e-12;        // shorter vectors count as zero
+constexpr double kMinLength = 1e-12;        // camera target closer to position counts as equal
 constexpr double kMinSineToView = 1e-6;     // camera up closer to the view direction is parallel
 constexpr std::size_t kMaxShownChars = 80;  // longer JSON values are shortened in messages
 
@@ -66,6 +69,8 @@ std::string format_number(double value) {
 }
 
 std::vector<double> components(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+double largest_magnitude(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 std::string format_numbers(const std::vector<double>& values) {
     if (values.size() == 1) return format_number(values[0]);
@@ -414,46 +419,70 @@ private:
             expect(all([](double x) { return x > 0.0; }), path, count_of(values.size(), "positive"),
                    values);
     }
-    void finite(double x, const std::string& path) const { check_numbers({x}, path, false); }
-    void finite(const glm::dvec3& v, const std::string& path) const {
-        check_numbers(components(v), path, false);
+    // Each value within the range, named by its own path: camera.position[0].
+    void check_range(const std::vector<double>& values, const std::string& path,
+                     const limits::RealRange& range) const {
+        for (std::size_t i = 0; i < values.size(); ++i)
+            expect(limits::within(range, values[i]),
+                   values.size() == 1 ? path : path + "[" + std::to_string(i) + "]",
+                   "a number within " + limits::shown(range), {values[i]});
     }
-    void positive(double x, const std::string& path) const { check_numbers({x}, path, true); }
-    void positive(const glm::dvec3& v, const std::string& path) const {
-        check_numbers(components(v), path, true);
+    void finite(const std::vector<double>& values, const std::string& path) const {
+        check_numbers(values, path, false);
+    }
+    // Finite, and within ±1e12.
+    void coordinates(const glm::dvec3& v, const std::string& path) const {
+        finite(components(v), path);
+        check_range(components(v), path, limits::coordinate);
+    }
+    // Positive, and within the range (lengths, scales, the aspect).
+    void positive(const std::vector<double>& values, const std::string& path,
+                  const limits::RealRange& range) const {
+        check_numbers(values, path, true);
+        check_range(values, path, range);
     }
     void direction(const glm::dvec3& v, const std::string& path) const {
-        finite(v, path);
-        expect(glm::length(v) > kMinLength, path, "a non-zero direction", components(v));
+        finite(components(v), path);
+        expect(largest_magnitude(v) > 0.0, path, "a non-zero direction", components(v));
     }
     void angle(double degrees, const std::string& path) const {
-        finite(degrees, path);
-        expect(degrees > 0.0 && degrees < 180.0, path, "an angle in (0, 180) degrees", {degrees});
+        finite({degrees}, path);
+        expect(limits::within(limits::angle_deg, degrees), path,
+               "an angle in " + limits::shown(limits::angle_deg) + " degrees", {degrees});
     }
 
     void check_camera(const Camera& camera) const {
-        finite(camera.position, "camera.position");
-        finite(camera.target, "camera.target");
+        coordinates(camera.position, "camera.position");
+        coordinates(camera.target, "camera.target");
         expect(glm::length(camera.target - camera.position) > kMinLength, "camera.target",
                "a point different from position", components(camera.target));
         direction(camera.up, "camera.up");
         const double sine =
-            glm::length(glm::cross(glm::normalize(camera.up), camera.view_direction()));
+            glm::length(glm::cross(normalize_safely(camera.up), camera.view_direction()));
         expect(sine > kMinSineToView, "camera.up", "a direction not parallel to the view direction",
                components(camera.up));
         angle(camera.fov_y_deg, "camera.fov_y_deg");
-        positive(camera.aspect, "camera.aspect");
-        positive(camera.near, "camera.near");
-        finite(camera.far, "camera.far");
-        if (!(camera.far > camera.near))
-            fail("camera.far", "must be greater than near (" + format_number(camera.near) +
-                                   "), got " + format_number(camera.far));
+        positive({camera.aspect}, "camera.aspect", limits::aspect);
+        positive({camera.near}, "camera.near", limits::length);
+        check_far(camera.near, camera.far);
+    }
+
+    void check_far(double near, double far) const {
+        finite({far}, "camera.far");
+        if (!(far > near))
+            fail("camera.far", "must be greater than near (" + format_number(near) + "), got " +
+                                   format_number(far));
+        check_range({far}, "camera.far", limits::length);
+        if (far > limits::far_over_near_max * near)
+            fail("camera.far", "must be at most " + limits::shown(limits::far_over_near_max) +
+                                   " times near (" + format_number(near) + "), got " +
+                                   format_number(far));
     }
 
     // Only the fields the light's type uses.
     void check_light(const Light& light) const {
         if (light.type != LightType::point) direction(light.direction, "light.direction");
-        if (light.type != LightType::directional) finite(light.position, "light.position");
+        if (light.type != LightType::directional) coordinates(light.position, "light.position");
         if (light.type == LightType::spot) angle(light.cone_deg, "light.cone_deg");
     }
 
@@ -471,23 +500,35 @@ private:
     }
 
     void check_object(const SceneObject& object, const std::string& path) const {
-        finite(object.position, path + ".position");
-        finite(object.rotation_deg, path + ".rotation");
-        positive(object.scale, path + ".scale");
+        coordinates(object.position, path + ".position");
+        finite(components(object.rotation_deg), path + ".rotation");
+        positive(components(object.scale), path + ".scale", limits::scale);
         switch (object.shape) {
-            case Shape::box: positive(object.size, path + ".size"); break;
+            case Shape::box: positive(components(object.size), path + ".size", limits::length); break;
             case Shape::plane:  // [x, z]
-                check_numbers({object.size.x, object.size.z}, path + ".size", true);
+                positive({object.size.x, object.size.z}, path + ".size", limits::length);
                 break;
-            case Shape::sphere: positive(object.radius, path + ".radius"); break;
+            case Shape::sphere: positive({object.radius}, path + ".radius", limits::length); break;
             case Shape::cylinder:
-                positive(object.radius, path + ".radius");
-                positive(object.height, path + ".height");
+                positive({object.radius}, path + ".radius", limits::length);
+                positive({object.height}, path + ".height", limits::length);
                 break;
             case Shape::mesh:
                 if (!object.mesh) fail(path + ".file", "mesh not loaded: " + object.mesh_file);
                 break;
         }
+        check_placed(object, path);
+    }
+
+    // Each field within its range can still place a corner beyond ±1e12: a large scale times a
+    // large size, or a large mesh, far from the origin.
+    void check_placed(const SceneObject& object, const std::string& path) const {
+        const Aabb box = object.world_bounds();
+        const double reach = std::max(largest_magnitude(box.min), largest_magnitude(box.max));
+        if (!limits::within(limits::coordinate, reach))
+            fail(path, "expected every corner within " + limits::shown(limits::coordinate) +
+                           " once placed (position, scale and size together), got a corner at " +
+                           format_number(reach));
     }
 
     const std::string& file_;
@@ -508,8 +549,8 @@ Scene load_scene(const std::string& path) {
 Scene parse_scene(const std::string& json_text, const std::string& file) {
     Scene scene = SceneReader(file).read(parse_json(json_text, file));
     validate_scene(scene);
-    scene.light.direction = glm::normalize(scene.light.direction);
-    scene.camera.up = glm::normalize(scene.camera.up);
+    scene.light.direction = normalize_safely(scene.light.direction);
+    scene.camera.up = normalize_safely(scene.camera.up);
     return scene;
 }
 

@@ -12,6 +12,7 @@ namespace shadowlab {
 struct TriangleMesh {
     std::vector<glm::dvec3> vertices;
     std::vector<std::array<int, 3>> triangles;
+    std::size_t degenerate_dropped = 0;  // the file's zero-area triangles, left out of `triangles`
 
     Aabb bounds() const {
         Aabb box;
@@ -20,8 +21,10 @@ struct TriangleMesh {
     }
 };
 
-// Loads OBJ, PLY, STL or glTF through Assimp, all meshes of the file merged.
-// Throws SceneError naming `json_path` when the file is missing, unreadable or has no triangles.
+// Loads OBJ, PLY, STL or glTF through Assimp, all meshes of the file merged, zero-area triangles
+// dropped (and counted). Throws SceneError naming `json_path` and saying why when the file is
+// missing or unreadable (Assimp's reason), has a vertex that is not finite, or no triangle of
+// non-zero area.
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file,
                                 const std::string& json_path);
 
