@@ -208,7 +208,9 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
     // Steps 16 and 17: our maps stay in [0,1]^3, so NormalizedSpace is the identity.
     ShadowMap map;
     map.world_to_uvz = uvz_from_ppls * ppls_from_light * light_from_world;  // step 17: XPSM Transform
-    map.z_bias_scale = 1.0 / focus.extent().z;  // step 18: bias / (MaxZ - MinZ)
+    // Step 18: bias / (MaxZ - MinZ), with the extent step 15 divides by: a flat focus region (the eye
+    // at the height of a flat ground under an overhead light) has MaxZ = MinZ, widened there.
+    map.z_bias_scale = uvz_from_ppls[2][2];
     setup.maps.push_back(map);
     record(trace, [&](Trace& t) {
         t.add("xpsm-14", "FocusRegionBasis", "scale (Max - Min) and offset Min, with ZMin/ZMax of both boxes",
