@@ -11,6 +11,7 @@
 #include "measure_command.hpp"
 #include "registry/method.hpp"
 #include "reference/exact_shadows.hpp"
+#include "scene/image_size.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/tessellation.hpp"
 
@@ -111,13 +112,13 @@ void inspect_map(const InspectOptions& options, const Method& method, const Sett
 }
 
 // A technique judges camera pixels: inspect looks through a small image of the camera's aspect.
-constexpr int kInspectImageWidth = 320;
+constexpr int kInspectImageSide = 320;
 
 void inspect_technique(const InspectOptions& options, const Method& technique, const Settings& settings,
                        const Scene& scene) {
     const WorldTriangles triangles = tessellate(scene);
-    const int height = std::max(1, int(std::lround(kInspectImageWidth / scene.camera.aspect)));
-    const ReferenceImage image = exact_reference(scene, triangles, kInspectImageWidth, height);
+    const glm::ivec2 size = image_size_within(scene.camera, kInspectImageSide, kInspectImageSide);
+    const ReferenceImage image = exact_reference(scene, triangles, size.x, size.y);
     Trace trace;
     const GeometryResult result = technique.compute_geometry(scene, triangles, image, settings, &trace);
     if (options.json) {

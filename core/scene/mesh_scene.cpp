@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "scene/scene_loader.hpp"
 #include "scene/triangle_mesh.hpp"
 
 namespace shadowlab {
@@ -34,6 +35,7 @@ Scene scene_around_mesh(const std::string& mesh_file) {
     scene.camera.near = 0.01 * size;
     scene.camera.far = 10.0 * size;
     scene.light.direction = glm::normalize(glm::dvec3(-0.4, -1.0, -0.3));
+    validate_scene(scene);  // a mesh far out or huge gets the loader's ranges and messages
     return scene;
 }
 
