@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "limits.hpp"
@@ -28,41 +29,43 @@ void write_csv_row(std::ofstream& csv, const std::string& scene, const Measureme
     csv << '\n';
 }
 
-// One line per method (and scene): misclassified share against total cost, one point per resolution.
-ChartSpec error_against_cost(const std::vector<std::pair<std::string, std::vector<Measurement>>>& runs) {
-    ChartSpec chart{"Speed-accuracy trade: error against cost", "cost per frame: setup + rasterization (ms)",
-                    "misclassified receiver pixels (%)", true, false, 900, 600, {}};
+using Runs = std::vector<std::pair<std::string, std::vector<Measurement>>>;
+
+// One line per method (and scene), one point per resolution: `value` of each measurement against its
+// total cost (setup + rasterization); a measurement without a value (nullopt) is left out, and so
+// is a line left with no point. A cross marks a fallback or a named limit.
+template <class Value>
+ChartSpec against_cost(ChartSpec chart, const Runs& runs, Value&& value) {
     for (const auto& [name, measurements] : runs) {
         ChartSeries series;
         series.name = name;
-        for (const Measurement& m : measurements) {
-            add_error_point(series, m.setup_ms + m.raster_ms, m);
-            series.labels.push_back(m.geometry ? std::string("exact") : std::to_string(m.resolution));
-        }
-        chart.series.push_back(std::move(series));
+        for (const Measurement& m : measurements)
+            if (const std::optional<double> y = value(m)) {
+                series.x.push_back(m.setup_ms + m.raster_ms);
+                series.y.push_back(*y);
+                series.marked.push_back(!m.notes().empty());
+                series.labels.push_back(m.geometry ? std::string("exact") : std::to_string(m.resolution));
+            }
+        if (!series.x.empty()) chart.series.push_back(std::move(series));
     }
     return chart;
 }
 
-// One line per map method (and scene): max perspective m against total cost, one point per
-// resolution. The perspective factor, not m: m's max is set by faces edge-on to the light, which no
-// parameterization can help. Techniques have no texels and no line.
-ChartSpec aliasing_against_cost(const std::vector<std::pair<std::string, std::vector<Measurement>>>& runs) {
-    ChartSpec chart{"Perspective aliasing against cost", "cost per frame: setup + rasterization (ms)",
-                    "max perspective m (texel width in pixels)", true, true, 900, 600, {}};
-    for (const auto& [name, measurements] : runs) {
-        ChartSeries series;
-        series.name = name;
-        for (const Measurement& m : measurements) {
-            if (m.geometry) continue;
-            series.x.push_back(m.setup_ms + m.raster_ms);
-            series.y.push_back(m.error.m_perspective.max);
-            series.marked.push_back(!m.notes().empty());
-            series.labels.push_back(std::to_string(m.resolution));
-        }
-        if (!series.x.empty()) chart.series.push_back(std::move(series));
-    }
-    return chart;
+// The misclassified share of every method and technique.
+ChartSpec error_against_cost(const Runs& runs) {
+    return against_cost({"Speed-accuracy trade: error against cost", "cost per frame: setup + rasterization (ms)",
+                         "misclassified receiver pixels (%)", true, false, 900, 600, {}},
+                        runs, [](const Measurement& m) { return std::optional(100.0 * m.error.misclassified); });
+}
+
+// Max perspective m of the map methods. The perspective factor, not m: m's max is set by faces
+// edge-on to the light, which no parameterization can help. Techniques have no texels and no line.
+ChartSpec aliasing_against_cost(const Runs& runs) {
+    return against_cost({"Perspective aliasing against cost", "cost per frame: setup + rasterization (ms)",
+                         "max perspective m (texel width in pixels)", true, true, 900, 600, {}},
+                        runs, [](const Measurement& m) {
+                            return m.geometry ? std::nullopt : std::optional(m.error.m_perspective.max);
+                        });
 }
 
 }  // namespace
@@ -78,7 +81,7 @@ void run_bench(const BenchOptions& o) {
     csv << "scene,method,resolution,misclassified,false_shadow,false_light,m_max,m_mean,m_p95,m_perspective_max,"
            "m_perspective_mean,m_perspective_p95,setup_ms,raster_ms,total_ms,fallback,polygons,fill_mean,fill_max\n";
 
-    std::vector<std::pair<std::string, std::vector<Measurement>>> runs;
+    Runs runs;
     // A technique has no map: it is measured once per scene, whatever the resolutions.
     auto resolutions_of = [&](const Method* m) { return m->makes_maps() ? o.resolutions : std::vector<int>{0}; };
     size_t total = 0, done = 0;
