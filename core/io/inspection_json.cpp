@@ -56,9 +56,15 @@ Json to_json(const NamedGeometry& named) {
         else if constexpr (std::is_same_v<T, ConvexPolyhedron>) return polyhedron_json(g);
         else if constexpr (std::is_same_v<T, SegmentSet>) return segments_json(g);
         else if constexpr (std::is_same_v<T, PolygonSet>) return polygons_json(g);
+        else if constexpr (std::is_same_v<T, Arrow>) return {{"kind", "arrow"}, {"from", to_json(g.from)}, {"to", to_json(g.to)}};
+        else if constexpr (std::is_same_v<T, AngleArc>)
+            return {{"kind", "angle"}, {"centre", to_json(g.centre)}, {"from", to_json(g.from)}, {"to", to_json(g.to)},
+                    {"radius", g.radius}};
+        else if constexpr (std::is_same_v<T, Label>) return {{"kind", "label"}, {"at", to_json(g.at)}, {"text", g.text}};
         else return {{"kind", "frustum"}, {"corners", points_json({g.corners.begin(), g.corners.end()})}};
     }, named.geometry);
     out["name"] = named.name;
+    out["role"] = to_string(named.role);
     return out;
 }
 

@@ -13,4 +13,17 @@ const char* to_string(Space space) {
     return "?";
 }
 
+const char* to_string(Role role) {
+    switch (role) {
+        case Role::step: return "step";
+        case Role::casters: return "casters";
+        case Role::receivers: return "receivers";
+        case Role::focus: return "focus";
+        case Role::light: return "light";
+        case Role::view: return "view";
+        case Role::map: return "map";
+    }
+    return "?";
+}
+
 }  // namespace shadowlab

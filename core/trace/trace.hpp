@@ -45,17 +45,50 @@ struct PolygonSet {
     }
 };
 
+// A vector drawn as an arrow from `from` to `to`: the view vector V, the light L, unitP.
+struct Arrow {
+    glm::dvec3 from, to;
+};
+
+// An angle drawn as a circular arc about `centre`, from direction `from` to direction `to`, at
+// distance `radius` (γ between V and L).
+struct AngleArc {
+    glm::dvec3 centre, from, to;
+    double radius = 1.0;
+};
+
+// Text placed at a point of the step's space: "n = 3.2", "C", "[0,1]³".
+struct Label {
+    glm::dvec3 at;
+    std::string text;
+};
+
 using TraceValue = std::variant<double, glm::dvec2, glm::dvec3, glm::dvec4, glm::dmat4, std::string>;
-using TraceGeometry = std::variant<PointSet, Aabb, ConvexPolyhedron, Frustum, SegmentSet, PolygonSet>;
+using TraceGeometry =
+    std::variant<PointSet, Aabb, ConvexPolyhedron, Frustum, SegmentSet, PolygonSet, Arrow, AngleArc, Label>;
 
 struct NamedValue {
     std::string name;
     TraceValue value;
 };
 
+// What a shape stands for. It fixes the shape's colour and legend entry in every view, as the
+// papers colour their figures: casters blue, receivers red, the focus region green.
+enum class Role {
+    step,       // the step's own construction (the highlight colour)
+    casters,    // shadow casters, their points, boxes and intervals
+    receivers,  // shadow receivers, likewise
+    focus,      // the region the map is fitted to (XPSM's focus region, the body B)
+    light,      // the light: its direction L, its position, its frustum
+    view,       // the camera: its frustum, the view vector V
+    map,        // the map's volume and the unit cube [0,1]^3
+};
+const char* to_string(Role role);
+
 struct NamedGeometry {
     std::string name;
     TraceGeometry geometry;
+    Role role = Role::step;
 };
 
 struct Step {
@@ -70,8 +103,8 @@ struct Step {
         values.push_back({std::move(name), std::move(v)});
         return *this;
     }
-    Step& shape(std::string name, TraceGeometry g) {
-        geometry.push_back({std::move(name), std::move(g)});
+    Step& shape(std::string name, TraceGeometry g, Role role = Role::step) {
+        geometry.push_back({std::move(name), std::move(g), role});
         return *this;
     }
 };

@@ -1,6 +1,8 @@
 #include "views/polydata.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 
 #include <vtkCellArray.h>
@@ -113,6 +115,24 @@ Placed polygons_faces(const PolygonSet& set, const glm::dmat4& to_space, double 
     return b.finish(polys, nullptr, nullptr);
 }
 
+// The arc as 32 straight pieces, swept in the plane of its two directions.
+Placed arc_polyline(const AngleArc& arc, const glm::dmat4& to_space) {
+    const glm::dvec3 a = glm::normalize(arc.from), b = glm::normalize(arc.to);
+    const double angle = std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
+    const glm::dvec3 across = b - glm::dot(a, b) * a;
+    const glm::dvec3 side = glm::length(across) > 0.0 ? glm::normalize(across) : a;
+    CellBuilder builder(to_space);
+    vtkNew<vtkCellArray> lines;
+    vtkIdType previous = -1;
+    for (int i = 0; i <= 32; ++i) {
+        const double t = angle * i / 32.0;
+        const vtkIdType id = builder.point(arc.centre + arc.radius * (std::cos(t) * a + std::sin(t) * side));
+        if (previous >= 0) builder.cell(lines, {previous, id});
+        previous = id;
+    }
+    return builder.finish(nullptr, lines, nullptr);
+}
+
 }  // namespace
 
 std::vector<glm::dvec3> object_colours(const Scene& scene) {
@@ -174,6 +194,9 @@ Placed geometry_polydata(const TraceGeometry& geometry, const glm::dmat4& to_spa
             else if constexpr (std::is_same_v<G, ConvexPolyhedron>) return polyhedron_faces(g, to_space);
             else if constexpr (std::is_same_v<G, SegmentSet>) return segments_polydata(g.segments, to_space);
             else if constexpr (std::is_same_v<G, PolygonSet>) return polygons_faces(g, to_space, reach);
+            else if constexpr (std::is_same_v<G, Arrow>) return segments_polydata({{g.from, g.to}}, to_space);
+            else if constexpr (std::is_same_v<G, AngleArc>) return arc_polyline(g, to_space);
+            else if constexpr (std::is_same_v<G, Label>) return points_polydata({g.at}, to_space);
             else return frustum_edges(g, to_space);
         },
         geometry);

@@ -63,6 +63,26 @@ const std::vector<ViewKind>& all_views() {
     return views;
 }
 
+const char* to_string(SpacePreset preset) {
+    switch (preset) {
+        case SpacePreset::orbit: return "orbit";
+        case SpacePreset::from_light: return "light";
+        case SpacePreset::side: return "side";
+    }
+    return "?";
+}
+
+const std::vector<SpacePreset>& all_space_presets() {
+    static const std::vector<SpacePreset> presets{SpacePreset::orbit, SpacePreset::from_light, SpacePreset::side};
+    return presets;
+}
+
+std::optional<SpacePreset> space_preset_named(const std::string& name) {
+    for (SpacePreset p : all_space_presets())
+        if (name == to_string(p)) return p;
+    return std::nullopt;
+}
+
 bool shows_steps(ViewKind view) { return view == ViewKind::world || view == ViewKind::light || view == ViewKind::ppls; }
 
 ViewReport build_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options) {

@@ -23,8 +23,18 @@ bool shows_steps(ViewKind view);
 // Which aliasing the Error view paints: Lloyd's m, or one of its two factors (ShadowError).
 enum class AliasingShown { total, perspective, projection };
 
+// How the World, Light space and PPLS views are looked at: a free perspective orbit, or
+// orthographic along the light (what the map sees) or from the side (in the plane of the light and
+// the view direction, where a warp shows).
+enum class SpacePreset { orbit, from_light, side };
+const char* to_string(SpacePreset preset);                             // "orbit", "light", "side"
+std::optional<SpacePreset> space_preset_named(const std::string& name);  // nullopt for an unknown name
+const std::vector<SpacePreset>& all_space_presets();
+
 struct ViewOptions {
     std::string step;       // the trace step to highlight; empty: the method's last step
+    SpacePreset preset = SpacePreset::orbit;  // World, Light space, PPLS: how the camera looks
+    bool scene_in_ppls = true;  // PPLS: draw the scene's triangles (clipped to the unit cube and a margin)
     bool lit_mask = false;  // camera view: white where lit, black where shadowed, unlit colours
     int width = 0, height = 0;  // error view: the camera image it measures (0: 640 x 640 / aspect)
     AliasingShown aliasing = AliasingShown::total;  // error view: the heat map's quantity
