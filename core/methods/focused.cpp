@@ -5,6 +5,7 @@
 
 #include "geometry/intersection_body.hpp"
 #include "methods/map_fit.hpp"
+#include "methods/step_figures.hpp"
 #include "methods/uniform.hpp"
 
 namespace shadowlab {
@@ -21,21 +22,26 @@ IntersectionBody focus_body(const ShadowInputs& in, const Settings& settings, Tr
     const BodyKernel kernel = *body_kernel_from_string(settings.choice("kernel"));
     IntersectionBody body = intersection_body({in.frustum, in.scene_bounds, in.light.homogeneous()}, kernel);
     record(trace, [&](Trace& t) {
-        t.add("frustum", "View frustum and scene bounds", "the camera's frustum F and the scene's bounds S",
-              Space::world)
-            .shape("F", in.frustum).shape("S", in.scene_bounds)
-            .shape("receivers", PointSet{in.receiver_points()})
-            .shape("casters", PointSet{in.caster_points()});
-        t.add("visible", "Visible region V", "V = F ∩ S", Space::world)
-            .value("volume", body.visible.volume())
-            .shape("V", body.visible);
-        t.add("body", "Intersection body B", "B = hull(V ∪ light) ∩ S: every point that can shadow V",
-              Space::world)
-            .value("kernel", std::string(to_string(kernel)))
-            .value("volume", body.body.volume())
-            .value("vertices", double(body.body.vertices.size()))
-            .value("faces", double(body.body.faces.size()))
-            .shape("B", body.body);
+        Step& inputs = t.add("frustum", "View frustum and scene bounds", "the camera's frustum F and the scene's bounds S",
+                             Space::world)
+                           .shape("F", in.frustum, Role::view).shape("S", in.scene_bounds);
+        // The receivers meeting F and the casters that can shadow them (none when F misses the scene).
+        if (const auto points = in.receiver_points(); !points.empty())
+            inputs.shape("receivers", PointSet{points}, Role::receivers);
+        if (const auto points = in.caster_points(); !points.empty()) inputs.shape("casters", PointSet{points}, Role::casters);
+        Step& visible = t.add("visible", "Visible region V", "V = F ∩ S", Space::world)
+                            .value("volume", body.visible.volume());
+        if (!body.visible.empty()) visible.shape("V", body.visible);
+        else visible.shape("F", in.frustum, Role::view).shape("V label", Label{in.camera.position, "V empty"});
+        Step& hull = t.add("body", "Intersection body B", "B = hull(V ∪ light) ∩ S: every point that can shadow V",
+                           Space::world)
+                         .value("kernel", std::string(to_string(kernel)))
+                         .value("volume", body.body.volume())
+                         .value("vertices", double(body.body.vertices.size()))
+                         .value("faces", double(body.body.faces.size()));
+        if (!body.body.empty()) hull.shape("B", body.body, Role::focus);
+        const glm::dvec3 aim = body.body.empty() ? in.scene_bounds.center() : body.body.centroid();
+        draw_light(hull, in.light, aim, 0.25 * in.scene_bounds.diagonal());
     });
     return body;
 }

@@ -11,6 +11,7 @@
 #include "math/matrix.hpp"
 #include "methods/light_fit.hpp"
 #include "methods/map_fit.hpp"
+#include "methods/step_figures.hpp"
 #include "methods/warp_common.hpp"
 
 namespace shadowlab {
@@ -74,28 +75,59 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
     const glm::dvec4 pps_light = camera.pps_from_world * in.light.homogeneous();
     const double w_ratio = pps_light.w / glm::length(glm::dvec3(pps_light));
     record(trace, [&](Trace& t) {
-        t.add("psm-virtual-camera", "Virtual camera slid back (Kozlov)",
-              "eye moved back by δ along the view so every caster is in front; near and far pulled to the points",
-              Space::view)
-            .value("slide", camera.slide).value("eye", camera.eye).value("near", camera.near).value("far", camera.far);
+        // The virtual camera's frustum is PPS's cube [-1,1]^3 taken back into the world.
+        const Aabb pps_cube{glm::dvec3(-1.0), glm::dvec3(1.0)};
+        Step& slide = t.add("psm-virtual-camera", "Virtual camera slid back (Kozlov)",
+                            "eye moved back by δ along the view so every caster is in front; near and far pulled to "
+                            "the points",
+                            Space::world)
+                          .value("slide", camera.slide).value("eye", camera.eye).value("near", camera.near)
+                          .value("far", camera.far)
+                          .shape("virtual frustum", preimage_of_box(camera.pps_from_world, pps_cube), Role::view)
+                          .shape("B", PointSet{ws_body}, Role::focus)
+                          .shape("eye", PointSet{{in.camera.position, camera.eye}}, Role::view);
+        if (camera.slide > 0.0)
+            draw_dimension(slide.shape("virtual eye label", Label{camera.eye, "virtual eye"}, Role::view), "δ",
+                           camera.eye, in.camera.position);
+        else
+            slide.shape("δ label", Label{in.camera.position, "δ = 0: every point already in front of the eye"});
         t.add("psm-pps", "Post-perspective space", "p' = (P V p) / w of the virtual camera: the view frustum becomes a cube",
               Space::ppls)
             .value("view_projection", camera.pps_from_world)
-            .shape("PPS body", PointSet{pps_body.points}).shape("unit cube", Aabb{glm::dvec3(-1.0), glm::dvec3(1.0)});
+            .shape("PPS body", PointSet{pps_body.points}, Role::focus).shape("unit cube", pps_cube, Role::view)
+            .shape("unit cube label", Label{{-1.0, 1.0, -1.0}, "view frustum → [-1,1]³"}, Role::view);
         t.set_frame(Space::view, glm::lookAt(camera.eye, camera.eye + in.camera.view_direction(), in.camera.up));
         t.set_frame(Space::ppls, camera.pps_from_world);
-        t.add("psm-light", "Light in PPS", "L' = P V (-L, 0): w ≈ 0 directional, w > 0 a point light, w < 0 behind the viewer",
-              Space::ppls)
-            .value("L_pps", pps_light).value("w_over_length", w_ratio);
+        Step& light = t.add("psm-light", "Light in PPS",
+                            "L' = P V (-L, 0): w ≈ 0 directional, w > 0 a point light, w < 0 behind the viewer",
+                            Space::ppls)
+                          .value("L_pps", pps_light).value("w_over_length", w_ratio);
+        const glm::dvec3 pps_centre = bounds_of(pps_body.points).center();
+        if (std::abs(w_ratio) < 1e-9) {  // still directional: L' as an arrow arriving at the body
+            draw_arrow(light, "L'", pps_centre + glm::normalize(glm::dvec3(pps_light)), -glm::dvec3(pps_light), 1.0,
+                       Role::light);
+        } else {
+            const glm::dvec3 pps_position = glm::dvec3(pps_light) / pps_light.w;
+            light.shape("L'", PointSet{{pps_position}}, Role::light)
+                .shape("L' label", Label{pps_position, pps_light.w > 0.0 ? "L': a point light"
+                                                                          : "L': behind the viewer (w < 0)"},
+                       Role::light)
+                .shape("L' to B", SegmentSet{{{pps_position, pps_centre}}}, Role::light);
+        }
     });
 
     ShadowMap map;
     if (std::abs(w_ratio) < 1e-9) {  // light perpendicular to the view: still directional in PPS
         map = pps_orthographic(-glm::dvec3(pps_light), pps_body.points, camera.pps_from_world);
         record(trace, [&](Trace& t) {
-            t.add("psm-light-orthographic", "Orthographic light in PPS",
-                  "light perpendicular to the view: it stays directional in PPS, fitted like a focused map", Space::ppls)
-                .value("L_pps_direction", -glm::dvec3(pps_light));
+            Step& fit = t.add("psm-light-orthographic", "Orthographic light in PPS",
+                              "light perpendicular to the view: it stays directional in PPS, fitted like a focused map",
+                              Space::ppls)
+                            .value("L_pps_direction", -glm::dvec3(pps_light))
+                            .shape("map volume", preimage_of_box(map.world_to_uvz * glm::inverse(camera.pps_from_world),
+                                                                 Aabb{glm::dvec3(0.0), glm::dvec3(1.0)}),
+                                   Role::map);
+            draw_arrow(fit, "L'", bounds_of(pps_body.points).center(), -glm::dvec3(pps_light), 1.0, Role::light);
             const glm::dmat4 light_from_pps =
                 light_basis(-glm::dvec3(pps_light), stable_up_hint(-glm::dvec3(pps_light))).light_from_world;
             t.set_frame(Space::light, light_from_pps * camera.pps_from_world);
@@ -125,13 +157,19 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
         if (inverted) uvz_from_pps = from_rows({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, -1, 1}, {0, 0, 0, 1}) * uvz_from_pps;
         map.world_to_uvz = uvz_from_pps * camera.pps_from_world;
         record(trace, [&](Trace& t) {
+            // The PPS light's frustum: the unit cube taken back through the fit (before any inversion of depth).
+            const Frustum light_frustum = preimage_of_box(fit.map.world_to_uvz, Aabb{glm::dvec3(0.0), glm::dvec3(1.0)});
             t.add("psm-light-frustum", inverted ? "Inverted projection (Kozlov)" : "Light frustum in PPS",
                   inverted ? "light behind the viewer: rays converge on the PPS light, depth reversed (d' = 1 - d)"
                            : "perspective from the PPS light covering the body",
                   Space::ppls)
                 .value("light_position", pps_point_light.position).value("pps_to_light", light_from_pps)
                 .value("near", fit.light_box.min.z).value("far", fit.light_box.max.z)
-                .value("inverted", inverted ? 1.0 : 0.0);
+                .value("inverted", inverted ? 1.0 : 0.0)
+                .shape("light frustum", light_frustum, Role::map)
+                .shape("near and far", near_and_far_faces(light_frustum), Role::map)
+                .shape("L'", PointSet{{pps_point_light.position}}, Role::light)
+                .shape("L' label", Label{pps_point_light.position, "L'"}, Role::light);
             t.set_frame(Space::light, light_from_pps * camera.pps_from_world);
         });
     }

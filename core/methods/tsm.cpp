@@ -15,6 +15,7 @@
 #include "methods/light_fit.hpp"
 #include "methods/map_fit.hpp"
 #include "methods/focused.hpp"
+#include "methods/step_figures.hpp"
 #include "methods/warp_common.hpp"
 
 namespace shadowlab {
@@ -29,6 +30,13 @@ constexpr double kDegenerateCentreLine = 0.05;
 constexpr double kNoWarp = 1e6;
 
 double cross(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
+
+// A polygon through the points, in order, as homogeneous vertices (w = 1).
+std::vector<glm::dvec4> polygon_of(const std::vector<glm::dvec3>& points) {
+    std::vector<glm::dvec4> out;
+    for (const glm::dvec3& p : points) out.emplace_back(p, 1.0);
+    return out;
+}
 
 // Light-space xy points, put in the plane z = 0 for the trace.
 std::vector<glm::dvec3> in_xy_plane(const std::vector<glm::dvec2>& points) {
@@ -51,15 +59,20 @@ LightView light_view(const ShadowInputs& in, const IntersectionBody& body, Trace
     ls.body = transformed(body.body.vertices, ls.light_from_world);
     for (const glm::dvec3& p : ls.body) ls.points.emplace_back(p);
     record(trace, [&](Trace& t) {
-        t.add("tsm-light-space", "Light's post-perspective space",
+        const glm::dvec3 ls_view = glm::dmat3(ls.light_from_world) * in.camera.view_direction();
+        Step& step = t.add("tsm-light-space", "Light's post-perspective space",
               "directional light: light space with an orthographic fit (z along the light, y the view made "
               "perpendicular to it, origin at the eye); where the paper projects the eye frustum's 8 corners, we "
               "project the vertices of the eye frustum focused to the body B",
               Space::light)
             .value("world_to_light", ls.light_from_world)
             .value("eye_xy", glm::dvec2(0.0))
-            .value("view_xy", glm::dvec2(glm::dmat3(ls.light_from_world) * in.camera.view_direction()))
-            .shape("B", PointSet{ls.body}).shape("B projected", PointSet{in_xy_plane(ls.points)});
+            .value("view_xy", glm::dvec2(ls_view))
+            .shape("B", PointSet{ls.body}, Role::focus).shape("B projected", PointSet{in_xy_plane(ls.points)})
+            .shape("eye", PointSet{{glm::dvec3(0.0)}}, Role::view)
+            .shape("eye label", Label{glm::dvec3(0.0), "eye"}, Role::view);
+        draw_arrow(step, "V", glm::dvec3(0.0), ls_view, glm::length(glm::dvec2(bounds_of(ls.body).extent())) / 4,
+                   Role::view);
         t.set_frame(Space::light, ls.light_from_world);
     });
     return ls;
@@ -89,14 +102,17 @@ CentreLine centre_line(const Camera& camera, const IntersectionBody& body, const
     l.axis = l.length > 0.0 ? (l.far_centre - l.near_centre) / l.length : glm::dvec2(0.0);
     l.extent = glm::length(glm::dvec2(bounds_of(ls.body).extent()));
     record(trace, [&](Trace& t) {
-        t.add("tsm-centre-line", "Centre line l",
+        Step& step = t.add("tsm-centre-line", "Centre line l",
               "from the near plane's centre to the far plane's centre, projected; near and far moved to touch V; "
               "shorter than 5% of the points' extent: the light is parallel to the view",
               Space::light)
             .value("near", near).value("far", far)
             .value("near_centre", l.near_centre).value("far_centre", l.far_centre)
             .value("length", l.length).value("points_extent", l.extent).value("direction", l.axis)
-            .shape("l", PointSet{in_xy_plane({l.near_centre, l.far_centre})});
+            .shape("centres", PointSet{in_xy_plane({l.near_centre, l.far_centre})})
+            .shape("near centre label", Label{{l.near_centre, 0.0}, "near centre"})
+            .shape("far centre label", Label{{l.far_centre, 0.0}, "far centre"});
+        if (l.length > 0.0) step.shape("l", SegmentSet{{{{l.near_centre, 0.0}, {l.far_centre, 0.0}}}});
     });
     return l;
 }
@@ -123,7 +139,7 @@ std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> points, Trace* trace
     record(trace, [&](Trace& t) {
         t.add("tsm-hull", "Convex hull", "2D convex hull of the projected points", Space::light)
             .value("vertices", double(hull.size()))
-            .shape("hull", PointSet{in_xy_plane(hull)});
+            .shape("hull", PolygonSet{}.add(polygon_of(in_xy_plane(hull))));
     });
     return hull;
 }
@@ -150,12 +166,16 @@ TopBase top_and_base(const std::vector<glm::dvec2>& hull, const CentreLine& l, T
         }
         auto line = [&](double at) {
             const glm::dvec2 o = l.near_centre + at * l.axis;
-            return PointSet{in_xy_plane({o + right * across, o + left * across})};
+            return SegmentSet{{{{o + right * across, 0.0}, {o + left * across, 0.0}}}};
         };
+        auto middle = [&](double at) { return glm::dvec3(l.near_centre + at * l.axis, 0.0); };
         t.add("tsm-top-base-lines", "Top line l_t and base line l_b",
               "perpendicular to l, touching the hull on the near and far side; λ is their distance", Space::light)
             .value("top", lines.top).value("base", lines.base).value("lambda", lines.lambda())
-            .shape("l_t", line(lines.top)).shape("l_b", line(lines.base));
+            .shape("l_t", line(lines.top)).shape("l_t label", Label{middle(lines.top), "l_t"})
+            .shape("l_b", line(lines.base)).shape("l_b label", Label{middle(lines.base), "l_b"})
+            .shape("λ", SegmentSet{{{middle(lines.top), middle(lines.base)}}})
+            .shape("λ label", Label{middle(0.5 * (lines.top + lines.base)), "λ = " + label_number(lines.lambda())});
     });
     return lines;
 }
@@ -181,7 +201,9 @@ Focus focus_80(const CentreLine& l, const TopBase& lines, double focus, Trace* t
               Space::light)
             .value("focus", focus).value("xi", kXi).value("p_L", f.p_l).value("delta_prime", f.delta_prime)
             .value("lambda", lambda).value("eta", f.eta).value("q", f.q)
-            .shape("p_L", PointSet{in_xy_plane({f.p_l})}).shape("q", PointSet{in_xy_plane({f.q})});
+            .shape("p_L", PointSet{in_xy_plane({f.p_l})}).shape("p_L label", Label{{f.p_l, 0.0}, "p_L"})
+            .shape("q", PointSet{in_xy_plane({f.q})}).shape("q label", Label{{f.q, 0.0}, "q"})
+            .shape("l", SegmentSet{{{{f.q, 0.0}, {f.p_l, 0.0}}}});
     });
     return f;
 }
@@ -222,7 +244,8 @@ Trapezoid trapezoid_around(const std::vector<glm::dvec2>& hull, const CentreLine
             .value("right_slope", z.right_slope).value("left_slope", z.left_slope)
             .value("corner0", z.corners[0]).value("corner1", z.corners[1])
             .value("corner2", z.corners[2]).value("corner3", z.corners[3])
-            .shape("trapezoid", PointSet{in_xy_plane({z.corners.begin(), z.corners.end()})});
+            .shape("trapezoid", PolygonSet{}.add(polygon_of(in_xy_plane({z.corners.begin(), z.corners.end()}))))
+            .shape("q", PointSet{in_xy_plane({z.q})}).shape("q label", Label{{z.q, 0.0}, "q"});
     });
     return z;
 }
@@ -238,7 +261,8 @@ glm::dvec4 depth_row(const glm::dvec4& w, const std::vector<glm::dvec3>& ls_body
 // TSM: N_T, the trapezoid onto the unit square, in one projective step where the paper chains
 // T1 R T2 H S1 N T3 S2: w = a, the distance from q along l; u w = (s - m_r a) / (m_l - m_r), s
 // across l, m_l and m_r the side lines' slopes; v w = (η + λ)(a - η) / λ. Light space -> the map's unit cube.
-glm::dmat4 trapezoid_to_square(const Trapezoid& z, const std::vector<glm::dvec3>& ls_body, Trace* trace) {
+glm::dmat4 trapezoid_to_square(const Trapezoid& z, const Focus& f, const std::vector<glm::dvec3>& ls_body,
+                               Trace* trace) {
     const glm::dvec4 a{z.axis.x, z.axis.y, 0.0, -glm::dot(z.axis, z.q)};
     const glm::dvec4 s{-z.axis.y, z.axis.x, 0.0, -cross(z.axis, z.q)};
     const glm::dvec4 u = (s - z.right_slope * a) / (z.left_slope - z.right_slope);
@@ -251,9 +275,21 @@ glm::dmat4 trapezoid_to_square(const Trapezoid& z, const std::vector<glm::dvec3>
                            "the paper writes z_L w per vertex instead, which one matrix cannot",
                            Space::unit)
                          .value("N_T", unit_from_light);
-        for (size_t i = 0; i < z.corners.size(); ++i)
-            step.value("corner" + std::to_string(i) + "_uv",
-                       glm::dvec2(transform_point(unit_from_light, {z.corners[i], 0.0})));
+        auto on_square = [&](const glm::dvec2& ls_xy) {
+            return glm::dvec3(glm::dvec2(transform_point(unit_from_light, {ls_xy, 0.0})), 0.0);
+        };
+        std::vector<glm::dvec3> square;
+        for (size_t i = 0; i < z.corners.size(); ++i) {
+            square.push_back(on_square(z.corners[i]));
+            step.value("corner" + std::to_string(i) + "_uv", glm::dvec2(square.back()));
+        }
+        // The trapezoid lands on the unit square, and the focus region's end p_L on the 80% line v = (1 - ξ) / 2.
+        const double v80 = (1.0 - kXi) / 2.0;
+        step.shape("trapezoid on the square", PolygonSet{}.add(polygon_of(square)), Role::map)
+            .shape("80% line", SegmentSet{{{{0.0, v80, 0.0}, {1.0, v80, 0.0}}}})
+            .shape("80% label", Label{{1.0, v80, 0.0}, "80% line"})
+            .shape("p_L", PointSet{{on_square(f.p_l)}}).shape("p_L label", Label{on_square(f.p_l), "p_L"});
+        draw_unit_cube(step);
     });
     return unit_from_light;
 }
@@ -284,7 +320,7 @@ ShadowSetup compute_tsm(const ShadowInputs& in, const Settings& s, Trace* trace)
         return setup;
     }
     const Trapezoid trapezoid = trapezoid_around(hull, l, lines, focus, trace);
-    const glm::dmat4 unit_from_light = trapezoid_to_square(trapezoid, ls.body, trace);  // N_T
+    const glm::dmat4 unit_from_light = trapezoid_to_square(trapezoid, focus, ls.body, trace);  // N_T
 
     ShadowMap map;
     map.world_to_uvz = unit_from_light * ls.light_from_world;

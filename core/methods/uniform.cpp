@@ -6,6 +6,7 @@
 
 #include "methods/light_fit.hpp"
 #include "methods/map_fit.hpp"
+#include "methods/step_figures.hpp"
 
 namespace shadowlab {
 
@@ -18,8 +19,9 @@ void fit_uniform(const ShadowInputs& in, ShadowSetup& setup, Trace* trace) {
     const auto c = in.scene_bounds.corners();
     const std::vector<glm::dvec3> ws_corners(c.begin(), c.end());
     record(trace, [&](Trace& t) {
-        t.add("scene-bounds", "Scene bounds", "S = union of every object's world box", Space::world)
-            .shape("S", in.scene_bounds);
+        Step& step = t.add("scene-bounds", "Scene bounds", "S = union of every object's world box", Space::world)
+                         .shape("S", in.scene_bounds, Role::map);
+        draw_light(step, in.light, in.scene_bounds.center(), 0.25 * in.scene_bounds.diagonal());
     });
     fit_map(in, {&ws_corners, stable_up_hint(in.light.direction), in.scene_bounds.center()}, setup, trace);
     record_output(setup, ws_corners, trace);

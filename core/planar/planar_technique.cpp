@@ -3,8 +3,10 @@
 #include <algorithm>
 
 #include "math/stopwatch.hpp"
+#include "methods/step_figures.hpp"
 #include "planar/planar_projection.hpp"
 #include "techniques/pixel_footprint.hpp"
+#include "techniques/technique_figures.hpp"
 
 namespace shadowlab {
 namespace {
@@ -33,23 +35,48 @@ Receivers receivers(const Scene& scene) {
     return out;
 }
 
-void record_receiver(Trace* trace, const Scene& scene, const ReceiverPlane& r, const FlattenedCasters& f) {
+// The receiving plane object's own triangles, as the trace draws its plane.
+PolygonSet plane_triangles(const WorldTriangles& triangles, int object) {
+    PolygonSet set;
+    for (std::size_t k = 0; k < triangles.triangles.size(); ++k) {
+        if (triangles.object[k] != object) continue;
+        std::vector<glm::dvec4> loop;
+        for (int v : triangles.triangles[k]) loop.emplace_back(triangles.vertices[v], 1.0);
+        set.add(loop);
+    }
+    return set;
+}
+
+void record_receiver(Trace* trace, const Scene& scene, const WorldTriangles& triangles, const ReceiverPlane& r,
+                     const FlattenedCasters& f) {
     record(trace, [&](Trace& t) {
         const std::string name = scene.objects[r.object].name;
+        const PolygonSet plane = plane_triangles(triangles, r.object);
+        Aabb plane_bounds;
+        for (const glm::dvec4& v : plane.vertices) plane_bounds.extend(glm::dvec3(v));
         t.add("planar.plane." + name, "Receiver plane '" + name + "'", "P = (n, d): n . x + d = 0, the light on its + side",
               Space::world)
-            .value("P", r.plane);
-        t.add("planar.light." + name, "Light", "L = (position, 1), or (-direction, 0) for a directional light",
-              Space::world)
-            .value("L", scene.light.homogeneous()).value("P . L", glm::dot(r.plane, scene.light.homogeneous()));
+            .value("P", r.plane)
+            .shape("P", plane, Role::receivers)
+            .shape("n", Arrow{plane_bounds.center(), plane_bounds.center() + plane_bounds.diagonal() / 4 * glm::dvec3(r.plane)},
+                   Role::receivers)
+            .shape("P label", Label{plane_bounds.center(), "P: '" + name + "'"}, Role::receivers);
+        const double p_dot_l = glm::dot(r.plane, scene.light.homogeneous());
+        draw_light(t.add("planar.light." + name, "Light", "L = (position, 1), or (-direction, 0) for a directional light",
+                         Space::world)
+                       .value("L", scene.light.homogeneous()).value("P . L", p_dot_l)
+                       .shape("P", plane, Role::receivers)
+                       .shape("P . L label", Label{plane_bounds.center(), "P · L = " + label_number(p_dot_l)}),
+                   scene.light, plane_bounds.center(), plane_bounds.diagonal() / 2);
         PolygonSet flattened;
         for (const HomogeneousPolygon& p : f.polygons) flattened.add(p);
-        t.add("planar.matrix." + name, "Projection matrix", "M = (P . L) I - L P^T; x -> M x, divided by w, on the plane",
-              Space::world)
-            .value("M", r.projection).value("flattened triangles", double(f.polygons.size()))
-            .value("triangles below the plane", double(f.below_plane))
-            .value("triangles beyond the light", double(f.beyond_light))
-            .shape("shadow", std::move(flattened));
+        Step& matrix = t.add("planar.matrix." + name, "Projection matrix",
+                             "M = (P . L) I - L P^T; x -> M x, divided by w, on the plane", Space::world)
+                           .value("M", r.projection).value("flattened triangles", double(f.polygons.size()))
+                           .value("triangles below the plane", double(f.below_plane))
+                           .value("triangles beyond the light", double(f.beyond_light));
+        if (flattened.polygons.empty()) matrix.shape("shadow label", Label{plane_bounds.center(), "no caster above the plane"});
+        else matrix.shape("shadow", std::move(flattened));
     });
 }
 
@@ -85,7 +112,7 @@ GeometryResult compute_planar(const Scene& scene, const WorldTriangles& triangle
         const Stopwatch setup;
         const FlattenedCasters f = flatten_casters(scene, triangles, receiver);
         result.setup_ms += setup.ms();
-        record_receiver(trace, scene, receiver, f);
+        record_receiver(trace, scene, triangles, receiver, f);
         below += f.below_plane;
         beyond += f.beyond_light;
         const Stopwatch raster;
@@ -106,10 +133,13 @@ GeometryResult compute_planar(const Scene& scene, const WorldTriangles& triangle
     record(trace, [&](Trace& t) {
         std::size_t shadowed = 0;
         for (uint8_t s : result.shadowed) shadowed += s;
-        t.add("planar.pixels", "Shadowed pixels", "a pixel of a receiving plane is shadowed where a flattened caster covers it",
-              Space::view)
-            .value("image", glm::dvec2(image.width, image.height)).value("shadowed pixels", double(shadowed))
-            .value("fill mean", result.cost.fill_mean).value("fill max", result.cost.fill_max);
+        draw_shadowed_points(t.add("planar.pixels", "Shadowed pixels",
+                                   "a pixel of a receiving plane is shadowed where a flattened caster covers it",
+                                   Space::view)
+                                 .value("image", glm::dvec2(image.width, image.height))
+                                 .value("shadowed pixels", double(shadowed))
+                                 .value("fill mean", result.cost.fill_mean).value("fill max", result.cost.fill_max),
+                             result.shadowed, image, scene.camera);
     });
     result.limits = limits(r, below, beyond);
     result.rule = StencilRule::cover;

@@ -1,9 +1,13 @@
 #include "volumes/volumes_technique.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 
 #include "math/stopwatch.hpp"
+#include "methods/step_figures.hpp"
+#include "techniques/technique_figures.hpp"
 #include "volumes/stencil_count.hpp"
 
 namespace shadowlab {
@@ -64,8 +68,40 @@ std::size_t eye_inside_pixels(const StencilCounts& c, const ReferenceImage& imag
     return n;
 }
 
+// The edges that break the casters' meshes (open or non-manifold), or every edge when none does.
+SegmentSet telling_edges(const std::vector<ObjectTopology>& topology, bool all_closed) {
+    SegmentSet edges;
+    for (const ObjectTopology& o : topology)
+        for (const MeshEdge& e : o.edges)
+            if (all_closed || e.open() || e.non_manifold()) edges.segments.push_back({e.a, e.b});
+    return edges;
+}
+
+// The camera's frustum with its far plane at infinity, in view space: the near rectangle and the
+// four sides running to w = 0, what P_inf keeps.
+PolygonSet infinite_frustum(const Camera& camera) {
+    const double tan_y = std::tan(glm::radians(camera.fov_y_deg) / 2.0), tan_x = tan_y * camera.aspect;
+    std::array<glm::dvec4, 4> near, far;
+    const std::array<glm::dvec2, 4> signs{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
+    for (int i = 0; i < 4; ++i) {
+        near[i] = {signs[i].x * tan_x * camera.near, signs[i].y * tan_y * camera.near, -camera.near, 1.0};
+        far[i] = {signs[i].x * tan_x, signs[i].y * tan_y, -1.0, 0.0};
+    }
+    PolygonSet set;
+    set.add({near[0], near[1], near[2], near[3]});
+    for (int i = 0; i < 4; ++i) set.add({near[i], far[i], far[(i + 1) % 4], near[(i + 1) % 4]});
+    return set;
+}
+
+// A polygon set to draw, or a label saying it is empty.
+Step& polygons_or_label(Step& step, const std::string& name, const std::vector<VolumePolygon>& polygons,
+                        const glm::dvec3& at, Role role = Role::step) {
+    if (polygons.empty()) return step.shape(name + " label", Label{at, "no " + name});
+    return step.shape(name, polygon_set(polygons), role);
+}
+
 void record_geometry(Trace* trace, const std::vector<ObjectTopology>& topology, const Silhouette& s,
-                     const ShadowVolume& v, const Camera& camera) {
+                     const ShadowVolume& v, const Scene& scene) {
     record(trace, [&](Trace& t) {
         int open = 0, non_manifold = 0, closed = 0;
         for (const ObjectTopology& o : topology) {
@@ -73,51 +109,79 @@ void record_geometry(Trace* trace, const std::vector<ObjectTopology>& topology, 
             non_manifold += o.non_manifold_edges;
             closed += o.closed();
         }
-        t.add("volumes.topology", "Edges of the casters",
-              "each edge should join one triangle running a -> b and one running b -> a (closed, consistently oriented)",
-              Space::world)
-            .value("casting objects", double(topology.size())).value("closed objects", double(closed))
-            .value("open edges", double(open)).value("non-manifold edges", double(non_manifold));
-        t.add("volumes.light-facing", "Light-facing triangles", "n . L > 0 with L the light as a homogeneous point",
-              Space::world)
-            .value("triangles", double(s.casting.size()))
-            .shape("light-facing", polygon_set(v.front_cap));
-        SegmentSet edges;
+        const SegmentSet edges = telling_edges(topology, open + non_manifold == 0);
+        Aabb casters;
+        for (const auto& [a, b] : edges.segments) casters.extend(a), casters.extend(b);
+        const glm::dvec3 above = casters.empty() ? scene.camera.target
+                                                 : glm::dvec3(casters.center().x, casters.max.y, casters.center().z);
+        Step& topology_step =
+            t.add("volumes.topology", "Edges of the casters",
+                  "each edge should join one triangle running a -> b and one running b -> a (closed, consistently "
+                  "oriented)",
+                  Space::world)
+                .value("casting objects", double(topology.size())).value("closed objects", double(closed))
+                .value("open edges", double(open)).value("non-manifold edges", double(non_manifold))
+                .shape("edges label", Label{above, open + non_manifold == 0
+                                                       ? "closed: " + std::to_string(closed) + " objects"
+                                                       : std::to_string(open) + " open, " + std::to_string(non_manifold) +
+                                                             " non-manifold edges"},
+                       Role::casters);
+        if (!edges.segments.empty()) topology_step.shape("edges", edges, Role::casters);
+        Step& facing = t.add("volumes.light-facing", "Light-facing triangles",
+                             "n . L > 0 with L the light as a homogeneous point", Space::world)
+                           .value("triangles", double(s.casting.size()));
+        polygons_or_label(facing, "light-facing", v.front_cap, above, Role::casters);
+        draw_light(facing, scene.light, above, casters.empty() ? 1.0 : casters.diagonal());
+        SegmentSet silhouette;
         double multiplicity = 0.0;
         for (const SilhouetteEdge& e : s.edges) {
-            edges.segments.push_back({e.a, e.b});
+            silhouette.segments.push_back({e.a, e.b});
             multiplicity += e.multiplicity;
         }
-        t.add("volumes.silhouette", "Silhouette edges",
-              "edges between a light-facing and a back-facing triangle; multiplicity = sum of +-1 over casting triangles",
-              Space::world)
-            .value("edges", double(s.edges.size())).value("total multiplicity", multiplicity)
-            .shape("silhouette", std::move(edges));
-        t.add("volumes.extrusion", "Extruded quads", "edge a -> b gives (b, a, a - L, b - L) with w = 0: to infinity",
-              Space::world)
-            .value("quads", double(v.quads.size()))
-            .shape("quads", polygon_set(v.quads));
+        Step& outline = t.add("volumes.silhouette", "Silhouette edges",
+                              "edges between a light-facing and a back-facing triangle; multiplicity = sum of +-1 over "
+                              "casting triangles",
+                              Space::world)
+                            .value("edges", double(s.edges.size())).value("total multiplicity", multiplicity);
+        if (silhouette.segments.empty()) outline.shape("silhouette label", Label{above, "no silhouette edge"});
+        else outline.shape("silhouette", std::move(silhouette), Role::casters);
+        Step& extrusion = t.add("volumes.extrusion", "Extruded quads",
+                                "edge a -> b gives (b, a, a - L, b - L) with w = 0: to infinity", Space::world)
+                              .value("quads", double(v.quads.size()));
+        polygons_or_label(extrusion, "quads", v.quads, above);
+        draw_light(extrusion, scene.light, above, casters.empty() ? 1.0 : casters.diagonal());
         Step& caps = t.add("volumes.caps", "Front and back caps (z-fail)",
                            "front cap: light-facing triangles; back cap: back-facing triangles projected to infinity",
                            Space::world);
         caps.value("front cap triangles", double(v.front_cap.size()))
-            .value("back cap triangles", double(v.back_cap.size()))
-            .shape("front cap", polygon_set(v.front_cap)).shape("back cap", polygon_set(v.back_cap));
-        if (v.back_cap.empty() && !s.back_cap.empty())
-            caps.value("note", std::string("directional light: the back cap collapses to one point at infinity"));
+            .value("back cap triangles", double(v.back_cap.size()));
+        polygons_or_label(caps, "front cap", v.front_cap, above);
+        if (v.back_cap.empty() && !s.back_cap.empty()) {
+            const std::string collapsed = "directional light: the back cap collapses to one point at infinity";
+            caps.value("note", collapsed);
+            draw_light(caps, scene.light, above, casters.empty() ? 1.0 : casters.diagonal())
+                .shape("back cap label", Label{above, collapsed}, Role::light);
+        } else {
+            polygons_or_label(caps, "back cap", v.back_cap, above);
+        }
+        const Camera& camera = scene.camera;
         t.add("volumes.projection", "Infinite far plane", "P_inf: P with far -> infinity; w = 0 points land at depth 1",
               Space::view)
-            .value("view", camera.view_matrix()).value("projection", camera.infinite_projection_matrix());
+            .value("view", camera.view_matrix()).value("projection", camera.infinite_projection_matrix())
+            .shape("frustum to infinity", infinite_frustum(camera), Role::view)
+            .shape("far plane label", Label{{0.0, 0.0, -camera.far}, "far plane at infinity"}, Role::view);
     });
 }
 
 void record_count(Trace* trace, const StencilCounts& c, const ReferenceImage& image, CountRule rule,
-                  const GeometryCost& cost, std::size_t shadowed) {
+                  const GeometryResult& result, const Camera& camera) {
     record(trace, [&](Trace& t) {
+        const std::size_t shadowed = std::size_t(std::count(result.shadowed.begin(), result.shadowed.end(), 1));
+        const GeometryCost& cost = result.cost;
         int largest = 0;
         for (std::size_t i = 0; i < c.zpass.size(); ++i)
             largest = std::max({largest, std::abs(c.zpass[i]), std::abs(c.zfail[i])});
-        t.add("volumes.count", "Per-pixel count",
+        Step& step = t.add("volumes.count", "Per-pixel count",
               rule == CountRule::zfail ? "z-fail: behind the visible point, +1 back-facing, -1 front-facing; != 0 shadowed"
                                        : "z-pass: in front of the visible point, +1 front-facing, -1 back-facing; != 0 shadowed",
               Space::view)
@@ -127,6 +191,7 @@ void record_count(Trace* trace, const StencilCounts& c, const ReferenceImage& im
             .value("pixels where the eye is inside a volume", double(eye_inside_pixels(c, image)))
             .value("largest count", double(largest))
             .value("fill mean", cost.fill_mean).value("fill max", cost.fill_max);
+        draw_shadowed_points(step, result.shadowed, image, camera);
     });
 }
 
@@ -141,17 +206,16 @@ GeometryResult compute_volumes(const Scene& scene, const WorldTriangles& triangl
     const Silhouette silhouette = find_silhouette(topology, triangles, scene.light);
     const ShadowVolume volume = extrude_volume(silhouette, scene.light);
     r.setup_ms = setup.ms();
-    record_geometry(trace, topology, silhouette, volume, scene.camera);
+    record_geometry(trace, topology, silhouette, volume, scene);
 
     const Stopwatch raster;
     StencilCounts counts = count_stencil(volume, scene.camera, image, rule);
     const std::vector<int>& count = rule == CountRule::zfail ? counts.zfail : counts.zpass;
     r.shadowed.assign(count.size(), 0);
-    std::size_t shadowed = 0;
-    for (std::size_t i = 0; i < count.size(); ++i) shadowed += r.shadowed[i] = image.visible[i] && count[i] != 0;
+    for (std::size_t i = 0; i < count.size(); ++i) r.shadowed[i] = image.visible[i] && count[i] != 0;
     r.raster_ms = raster.ms();
     r.cost = geometry_cost(drawn_polygons(volume, rule), counts.fragments);
-    record_count(trace, counts, image, rule, r.cost, shadowed);
+    record_count(trace, counts, image, rule, r, scene.camera);
     r.stencil = stencil_polygons(volume, rule);
     r.rule = rule == CountRule::zpass ? StencilRule::zpass : StencilRule::zfail;
 
