@@ -1,5 +1,6 @@
 #include "model/inspection.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "limits.hpp"
@@ -12,18 +13,26 @@ struct Inspection::Judged {
     std::optional<ShadowError> error;
 };
 
-const ReferenceImage& Inspection::reference(int width, int height) const {
-    if (!judged_ || judged_->width != width || judged_->height != height)
-        judged_ = std::make_shared<Judged>(Judged{width, height, exact_reference(scene, triangles, width, height), {}});
-    return judged_->reference;
+constexpr size_t kSizesKept = 3;  // a resized window asks for new sizes: the oldest are dropped
+
+Inspection::Judged& Inspection::judged(int width, int height) const {
+    if (!judged_) judged_ = std::make_shared<std::deque<Judged>>();
+    std::deque<Judged>& kept = *judged_;
+    const auto found = std::find_if(kept.begin(), kept.end(), [&](const Judged& j) { return j.width == width && j.height == height; });
+    if (found != kept.end()) return *found;
+    kept.push_front({width, height, exact_reference(scene, triangles, width, height), {}});
+    if (kept.size() > kSizesKept) kept.pop_back();
+    return kept.front();
 }
 
+const ReferenceImage& Inspection::reference(int width, int height) const { return judged(width, height).reference; }
+
 const ShadowError& Inspection::error(int width, int height) const {
-    const ReferenceImage& ref = reference(width, height);
-    if (!judged_->error)
-        judged_->error = has_map() ? measure_shadow_error(scene, ref, depth, setup, bias)
-                                   : judge_shadows(scene, ref, geometry->shadowed);
-    return *judged_->error;
+    Judged& j = judged(width, height);
+    if (!j.error)
+        j.error = has_map() ? measure_shadow_error(scene, j.reference, depth, setup, bias)
+                            : judge_shadows(scene, j.reference, geometry->shadowed);
+    return *j.error;
 }
 
 Inspection inspect_scene(const Scene& scene, const InspectionRequest& request) {

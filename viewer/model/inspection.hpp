@@ -4,6 +4,7 @@
 // setup and every map rasterized into its tile of the texture; for a geometric technique its
 // GeometryResult (verdicts, stencil polygons, counts). The exact reference and the error against
 // it are traced only when a view asks for them, once per image size. No VTK here.
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -47,7 +48,8 @@ struct Inspection {
     // What the user is told: a map method's fallbacks, or a technique's limits.
     const std::vector<Note>& notes() const { return has_map() ? setup.fallbacks : geometry->limits; }
 
-    // The exact reference of a width x height camera image, traced on the first call for that size.
+    // The exact reference of a width x height camera image, traced on the first call for that size;
+    // the last few sizes asked for stay (the Error view's, the light views' small one for missed points).
     const ReferenceImage& reference(int width, int height) const;
     // The result judged against reference(width, height): a map's verdicts (slope-scaled bias per
     // pixel unless a constant bias was asked for), m and depth steps; a technique's verdicts.
@@ -55,7 +57,8 @@ struct Inspection {
 
 private:
     struct Judged;  // the reference and error of one image size
-    mutable std::shared_ptr<Judged> judged_;
+    Judged& judged(int width, int height) const;
+    mutable std::shared_ptr<std::deque<Judged>> judged_;  // most recently asked for first
 };
 
 // Throws std::invalid_argument naming the method, setting, resolution or image size at fault.

@@ -3,40 +3,64 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkPoints.h>
 #include <vtkUnsignedCharArray.h>
 
+#include "geometry/homogeneous_clip.hpp"
+
 namespace shadowlab {
 namespace {
 
 constexpr double kMinW = 1e-9;
 
-std::optional<glm::dvec3> place(const glm::dmat4& to_space, const glm::dvec3& p) {
-    const glm::dvec4 h = to_space * glm::dvec4(p, 1.0);
-    if (!(h.w > kMinW)) return std::nullopt;
-    return glm::dvec3(h) / h.w;
+// The half-spaces a placed primitive is cut to: w >= kMinW, and min <= x / w <= max on each axis
+// of the clip box, written as linear forms in (x, y, z, w) so that they hold before the division.
+std::vector<ClipPlane> clip_planes(const Placement& placement) {
+    std::vector<ClipPlane> planes{{{0.0, 0.0, 0.0, 1.0}, kMinW}};
+    if (!placement.clip) return planes;
+    for (int axis = 0; axis < 3; ++axis) {
+        glm::dvec4 above(0.0), below(0.0);
+        above[axis] = 1.0, above.w = -placement.clip->min[axis];
+        below[axis] = -1.0, below.w = placement.clip->max[axis];
+        planes.push_back({above, 0.0});
+        planes.push_back({below, 0.0});
+    }
+    return planes;
 }
 
-// Builds cells of `size` vertices from index lists, dropping those with a vertex behind w = 0.
+// Builds cells from homogeneous points of the space, each cut to the placement's half-spaces.
 class CellBuilder {
 public:
-    explicit CellBuilder(const glm::dmat4& to_space) : to_space_(to_space) {}
+    explicit CellBuilder(const Placement& placement) : placement_(placement), planes_(clip_planes(placement)) {}
 
-    vtkIdType point(const glm::dvec3& p) {
-        const auto q = place(to_space_, p);
-        if (!q) return -1;
-        return points_->InsertNextPoint(q->x, q->y, q->z);
+    glm::dvec4 in_space(const glm::dvec3& world) const { return placement_.to_space * glm::dvec4(world, 1.0); }
+
+    void polygon(vtkCellArray* cells, HomogeneousPolygon polygon) {
+        for (const ClipPlane& plane : planes_)
+            if (polygon.size() >= 3) polygon = clip(polygon, plane);
+        if (polygon.size() < 3) return void(++dropped_);
+        insert(cells, polygon);
     }
-    // A cell over already placed ids; false (and counted) when one of them was dropped.
-    bool cell(vtkCellArray* cells, const std::vector<vtkIdType>& ids) {
-        for (vtkIdType id : ids)
-            if (id < 0) return ++dropped_, false;
-        cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-        return true;
+    // The part of a -> b inside every half-space (Liang-Barsky on the linear forms); whether b itself is kept.
+    bool segment(vtkCellArray* cells, const glm::dvec4& a, const glm::dvec4& b) {
+        double t0 = 0.0, t1 = 1.0;
+        for (const ClipPlane& plane : planes_) {
+            const double da = glm::dot(plane.normal, a) - plane.offset, db = glm::dot(plane.normal, b) - plane.offset;
+            if (da < 0.0 && db < 0.0) return ++dropped_, false;
+            if (da < 0.0) t0 = std::max(t0, da / (da - db));
+            if (db < 0.0) t1 = std::min(t1, da / (da - db));
+        }
+        if (t0 >= t1) return ++dropped_, false;
+        insert(cells, {a + t0 * (b - a), a + t1 * (b - a)});
+        return t1 == 1.0;
+    }
+    void vertex(vtkCellArray* cells, const glm::dvec4& p) {
+        for (const ClipPlane& plane : planes_)
+            if (glm::dot(plane.normal, p) < plane.offset) return void(++dropped_);
+        insert(cells, {p});
     }
     Placed finish(vtkCellArray* polys, vtkCellArray* lines, vtkCellArray* verts) {
         auto data = vtkSmartPointer<vtkPolyData>::New();
@@ -48,92 +72,153 @@ public:
     }
 
 private:
-    glm::dmat4 to_space_;
+    void insert(vtkCellArray* cells, const HomogeneousPolygon& vertices) {
+        std::vector<vtkIdType> ids;
+        for (const glm::dvec4& h : vertices) {
+            const glm::dvec3 p = glm::dvec3(h) / h.w;
+            ids.push_back(points_->InsertNextPoint(p.x, p.y, p.z));
+        }
+        cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    }
+
+    const Placement& placement_;
+    std::vector<ClipPlane> planes_;
     vtkNew<vtkPoints> points_;
     size_t dropped_ = 0;
 };
 
-Placed box_edges(const Aabb& box, const glm::dmat4& to_space) {
-    CellBuilder b(to_space);
-    std::array<vtkIdType, 8> id{};
-    for (int i = 0; i < 8; ++i)
-        id[i] = b.point({i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z});
+Placed edges(const Placement& placement, const std::vector<std::pair<glm::dvec3, glm::dvec3>>& segments) {
+    CellBuilder b(placement);
     vtkNew<vtkCellArray> lines;
+    for (const auto& [from, to] : segments) b.segment(lines, b.in_space(from), b.in_space(to));
+    return b.finish(nullptr, lines, nullptr);
+}
+
+Placed box_edges(const Aabb& box, const Placement& placement) {
+    const auto corner = box.corners();
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> segments;
     for (int i = 0; i < 8; ++i)
         for (int bit : {1, 2, 4})
-            if (!(i & bit)) b.cell(lines, {id[i], id[i | bit]});
-    return b.finish(nullptr, lines, nullptr);
+            if (!(i & bit)) segments.push_back({corner[i], corner[i | bit]});
+    return edges(placement, segments);
 }
 
-Placed frustum_edges(const Frustum& f, const glm::dmat4& to_space) {
-    CellBuilder b(to_space);
-    std::array<vtkIdType, 8> id{};
-    for (int i = 0; i < 8; ++i) id[i] = b.point(f.corners[i]);
-    vtkNew<vtkCellArray> lines;
+Placed frustum_edges(const Frustum& f, const Placement& placement) {
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> segments;
     for (int i = 0; i < 4; ++i) {
-        b.cell(lines, {id[i], id[(i + 1) % 4]});          // near rectangle
-        b.cell(lines, {id[4 + i], id[4 + (i + 1) % 4]});  // far rectangle
-        b.cell(lines, {id[i], id[4 + i]});                // sides
+        segments.push_back({f.corners[i], f.corners[(i + 1) % 4]});          // near rectangle
+        segments.push_back({f.corners[4 + i], f.corners[4 + (i + 1) % 4]});  // far rectangle
+        segments.push_back({f.corners[i], f.corners[4 + i]});                // sides
     }
-    return b.finish(nullptr, lines, nullptr);
+    return edges(placement, segments);
 }
 
-Placed polyhedron_faces(const ConvexPolyhedron& poly, const glm::dmat4& to_space) {
-    CellBuilder b(to_space);
-    std::vector<vtkIdType> id;
-    for (const glm::dvec3& v : poly.vertices) id.push_back(b.point(v));
-    vtkNew<vtkCellArray> polys;
+// The faces' loops as world points: a polyhedron's faces; a polygon set's polygons, a vertex at
+// infinity (w = 0) drawn `reach` away from its finite neighbour along its direction (a polygon with
+// no finite vertex, a z-fail back cap, cannot be drawn and is left out).
+std::vector<std::vector<glm::dvec3>> face_loops(const ConvexPolyhedron& poly, double) {
+    std::vector<std::vector<glm::dvec3>> loops;
     for (const PolyFace& face : poly.faces) {
-        std::vector<vtkIdType> loop;
-        for (int i : face.loop) loop.push_back(id[i]);
-        b.cell(polys, loop);
+        std::vector<glm::dvec3>& loop = loops.emplace_back();
+        for (int i : face.loop) loop.push_back(poly.vertices[i]);
     }
-    return b.finish(polys, nullptr, nullptr);
+    return loops;
 }
 
-// A vertex at infinity (w = 0) is drawn `reach` away from its finite neighbour in the polygon, along
-// its direction; a polygon with no finite vertex (a z-fail back cap) cannot be drawn.
-Placed polygons_faces(const PolygonSet& set, const glm::dmat4& to_space, double reach) {
-    CellBuilder b(to_space);
-    vtkNew<vtkCellArray> polys;
+std::vector<std::vector<glm::dvec3>> face_loops(const PolygonSet& set, double reach) {
+    std::vector<std::vector<glm::dvec3>> loops;
     for (const std::vector<int>& polygon : set.polygons) {
         const size_t n = polygon.size();
-        std::vector<vtkIdType> loop;
+        std::vector<glm::dvec3> loop;
         for (size_t i = 0; i < n; ++i) {
             const glm::dvec4& v = set.vertices[polygon[i]];
-            if (v.w != 0.0) {
-                loop.push_back(b.point(glm::dvec3(v) / v.w));
-                continue;
-            }
             const glm::dvec4& before = set.vertices[polygon[(i + n - 1) % n]];
             const glm::dvec4& after = set.vertices[polygon[(i + 1) % n]];
-            const glm::dvec4& anchor = before.w != 0.0 ? before : after;
-            loop.push_back(anchor.w != 0.0 ? b.point(glm::dvec3(anchor) / anchor.w + reach * glm::normalize(glm::dvec3(v))) : -1);
+            const glm::dvec4& anchor = v.w != 0.0 ? v : before.w != 0.0 ? before : after;
+            if (anchor.w == 0.0) break;
+            loop.push_back(glm::dvec3(anchor) / anchor.w + (v.w != 0.0 ? glm::dvec3(0.0) : reach * glm::normalize(glm::dvec3(v))));
         }
-        b.cell(polys, loop);
+        if (loop.size() == n) loops.push_back(loop);
+    }
+    return loops;
+}
+
+template <class Faces>
+Placed faces(const Faces& shape, const Placement& placement) {
+    CellBuilder b(placement);
+    vtkNew<vtkCellArray> polys;
+    for (const std::vector<glm::dvec3>& loop : face_loops(shape, placement.reach)) {
+        HomogeneousPolygon polygon;
+        for (const glm::dvec3& p : loop) polygon.push_back(b.in_space(p));
+        b.polygon(polys, polygon);
     }
     return b.finish(polys, nullptr, nullptr);
+}
+
+template <class Faces>
+Placed face_edges(const Faces& shape, const Placement& placement) {
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> segments;
+    for (const std::vector<glm::dvec3>& loop : face_loops(shape, placement.reach))
+        for (size_t i = 0; i < loop.size(); ++i) segments.push_back({loop[i], loop[(i + 1) % loop.size()]});
+    return edges(placement, segments);
 }
 
 // The arc as 32 straight pieces, swept in the plane of its two directions.
-Placed arc_polyline(const AngleArc& arc, const glm::dmat4& to_space) {
+Placed arc_polyline(const AngleArc& arc, const Placement& placement) {
     const glm::dvec3 a = glm::normalize(arc.from), b = glm::normalize(arc.to);
     const double angle = std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
     const glm::dvec3 across = b - glm::dot(a, b) * a;
     const glm::dvec3 side = glm::length(across) > 0.0 ? glm::normalize(across) : a;
-    CellBuilder builder(to_space);
-    vtkNew<vtkCellArray> lines;
-    vtkIdType previous = -1;
-    for (int i = 0; i <= 32; ++i) {
-        const double t = angle * i / 32.0;
-        const vtkIdType id = builder.point(arc.centre + arc.radius * (std::cos(t) * a + std::sin(t) * side));
-        if (previous >= 0) builder.cell(lines, {previous, id});
-        previous = id;
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> pieces;
+    auto at = [&](int i) { return arc.centre + arc.radius * (std::cos(angle * i / 32.0) * a + std::sin(angle * i / 32.0) * side); };
+    for (int i = 0; i < 32; ++i) pieces.push_back({at(i), at(i + 1)});
+    return edges(placement, pieces);
+}
+
+// A 12-sided cone with its apex at `tip`, pointing along `axis` (unit), in space coordinates: it
+// reads as an arrow head from every side, unlike flat barbs.
+void add_cone(CellBuilder& b, vtkCellArray* polys, const glm::dvec3& tip, const glm::dvec3& axis, double length) {
+    const glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
+    const glm::dvec3 base = tip - length * axis;
+    const double radius = 0.35 * length;
+    auto rim = [&](int i) {
+        const double t = 2.0 * M_PI * i / 12.0;
+        return glm::dvec4(base + radius * (std::cos(t) * u + std::sin(t) * v), 1.0);
+    };
+    HomogeneousPolygon bottom;
+    for (int i = 0; i < 12; ++i) {
+        b.polygon(polys, {glm::dvec4(tip, 1.0), rim(i), rim(i + 1)});
+        bottom.push_back(rim(11 - i));
     }
-    return builder.finish(nullptr, lines, nullptr);
+    b.polygon(polys, bottom);
+}
+
+// The shaft cut like any segment; the head only where the tip itself is drawn, sized in the space
+// (after the division by w), so a warp does not stretch it.
+Placed arrow_shape(const Arrow& arrow, const Placement& placement) {
+    CellBuilder b(placement);
+    vtkNew<vtkCellArray> lines, polys;
+    const glm::dvec4 from = b.in_space(arrow.from), to = b.in_space(arrow.to);
+    if (b.segment(lines, from, to) && from.w > kMinW) {
+        const glm::dvec3 tail = glm::dvec3(from) / from.w, tip = glm::dvec3(to) / to.w;
+        const double length = glm::length(tip - tail);
+        if (length > 0.0) {
+            const double head = std::min(placement.head > 0.0 ? placement.head : 0.25 * length, 0.5 * length);
+            add_cone(b, polys, tip, (tip - tail) / length, head);
+        }
+    }
+    return b.finish(polys, lines, nullptr);
 }
 
 }  // namespace
+
+std::optional<glm::dvec3> placed_point(const Placement& placement, const glm::dvec3& world) {
+    const glm::dvec4 h = placement.to_space * glm::dvec4(world, 1.0);
+    for (const ClipPlane& plane : clip_planes(placement))
+        if (glm::dot(plane.normal, h) < plane.offset) return std::nullopt;
+    return glm::dvec3(h) / h.w;
+}
 
 std::vector<glm::dvec3> object_colours(const Scene& scene) {
     static constexpr std::array<std::array<double, 3>, 6> palette{
@@ -149,11 +234,11 @@ std::vector<glm::dvec3> object_colours(const Scene& scene) {
 }
 
 Placed triangles_polydata(const WorldTriangles& triangles, const std::vector<bool>& keep,
-                          const std::vector<glm::dvec3>& colours_per_object, const glm::dmat4& to_space) {
-    CellBuilder b(to_space);
-    std::vector<vtkIdType> id;
-    id.reserve(triangles.vertices.size());
-    for (const glm::dvec3& v : triangles.vertices) id.push_back(b.point(v));
+                          const std::vector<glm::dvec3>& colours_per_object, const Placement& placement) {
+    CellBuilder b(placement);
+    std::vector<glm::dvec4> in_space;
+    in_space.reserve(triangles.vertices.size());
+    for (const glm::dvec3& v : triangles.vertices) in_space.push_back(b.in_space(v));
     vtkNew<vtkCellArray> polys;
     vtkNew<vtkUnsignedCharArray> colours;
     colours->SetName("colour");
@@ -162,7 +247,9 @@ Placed triangles_polydata(const WorldTriangles& triangles, const std::vector<boo
         const int object = triangles.object[t];
         if (!keep[object]) continue;
         const auto& tri = triangles.triangles[t];
-        if (!b.cell(polys, {id[tri[0]], id[tri[1]], id[tri[2]]})) continue;
+        const vtkIdType cells = polys->GetNumberOfCells();
+        b.polygon(polys, {in_space[tri[0]], in_space[tri[1]], in_space[tri[2]]});
+        if (polys->GetNumberOfCells() == cells) continue;
         const glm::dvec3 c = 255.0 * colours_per_object[object];
         colours->InsertNextTuple3(c.r, c.g, c.b);
     }
@@ -171,35 +258,38 @@ Placed triangles_polydata(const WorldTriangles& triangles, const std::vector<boo
     return placed;
 }
 
-Placed segments_polydata(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& segments, const glm::dmat4& to_space) {
-    CellBuilder b(to_space);
-    vtkNew<vtkCellArray> lines;
-    for (const auto& [a, c] : segments) b.cell(lines, {b.point(a), b.point(c)});
-    return b.finish(nullptr, lines, nullptr);
+Placed segments_polydata(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& segments, const Placement& placement) {
+    return edges(placement, segments);
 }
 
-Placed points_polydata(const std::vector<glm::dvec3>& points, const glm::dmat4& to_space) {
-    CellBuilder b(to_space);
+Placed points_polydata(const std::vector<glm::dvec3>& points, const Placement& placement) {
+    CellBuilder b(placement);
     vtkNew<vtkCellArray> verts;
-    for (const glm::dvec3& p : points) b.cell(verts, {b.point(p)});
+    for (const glm::dvec3& p : points) b.vertex(verts, b.in_space(p));
     return b.finish(nullptr, nullptr, verts);
 }
 
-Placed geometry_polydata(const TraceGeometry& geometry, const glm::dmat4& to_space, double reach) {
+Placed geometry_polydata(const TraceGeometry& geometry, const Placement& placement) {
     return std::visit(
         [&](const auto& g) -> Placed {
             using G = std::decay_t<decltype(g)>;
-            if constexpr (std::is_same_v<G, PointSet>) return points_polydata(g.points, to_space);
-            else if constexpr (std::is_same_v<G, Aabb>) return box_edges(g, to_space);
-            else if constexpr (std::is_same_v<G, ConvexPolyhedron>) return polyhedron_faces(g, to_space);
-            else if constexpr (std::is_same_v<G, SegmentSet>) return segments_polydata(g.segments, to_space);
-            else if constexpr (std::is_same_v<G, PolygonSet>) return polygons_faces(g, to_space, reach);
-            else if constexpr (std::is_same_v<G, Arrow>) return segments_polydata({{g.from, g.to}}, to_space);
-            else if constexpr (std::is_same_v<G, AngleArc>) return arc_polyline(g, to_space);
-            else if constexpr (std::is_same_v<G, Label>) return points_polydata({g.at}, to_space);
-            else return frustum_edges(g, to_space);
+            if constexpr (std::is_same_v<G, PointSet>) return points_polydata(g.points, placement);
+            else if constexpr (std::is_same_v<G, Aabb>) return box_edges(g, placement);
+            else if constexpr (std::is_same_v<G, ConvexPolyhedron>) return faces(g, placement);
+            else if constexpr (std::is_same_v<G, SegmentSet>) return edges(placement, g.segments);
+            else if constexpr (std::is_same_v<G, PolygonSet>) return faces(g, placement);
+            else if constexpr (std::is_same_v<G, Arrow>) return arrow_shape(g, placement);
+            else if constexpr (std::is_same_v<G, AngleArc>) return arc_polyline(g, placement);
+            else if constexpr (std::is_same_v<G, Label>) return points_polydata({g.at}, placement);
+            else return frustum_edges(g, placement);
         },
         geometry);
+}
+
+std::optional<Placed> outline_polydata(const TraceGeometry& geometry, const Placement& placement) {
+    if (const auto* poly = std::get_if<ConvexPolyhedron>(&geometry)) return face_edges(*poly, placement);
+    if (const auto* set = std::get_if<PolygonSet>(&geometry)) return face_edges(*set, placement);
+    return std::nullopt;
 }
 
 }  // namespace shadowlab

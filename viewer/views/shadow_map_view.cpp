@@ -55,6 +55,11 @@ public:
 
 // World -> image pixels of the texture for one map: its texel (x, y) is centred at pixel (x, y) of
 // the image actor, its tile where the viewport puts it; drawn just above the image.
+// The map's tile in texture pixels, around the drawing plane z = 1.
+Aabb tile_in_pixels(const ShadowMap& map, int n) {
+    return {{map.viewport.x * n - 0.5, map.viewport.y * n - 0.5, 0.5}, {map.viewport.z * n - 0.5, map.viewport.w * n - 0.5, 1.5}};
+}
+
 glm::dmat4 pixels_from_world(const ShadowMap& map, int n) {
     glm::dmat4 pixels_from_uvz(1.0);
     pixels_from_uvz[0][0] = (map.viewport.z - map.viewport.x) * n;
@@ -80,7 +85,9 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
             report.notes.push_back("the camera frustum is not drawn on a paraboloid map (its edges bend)");
             continue;
         }
-        auto frustum = actor_for(geometry_polydata(in.inputs.frustum, pixels_from_world(map, n)), glm::dvec3(1.0, 0.85, 0.1));
+        // Cut to the map's tile: what lies outside the map is not in it.
+        const Placement in_tile{.to_space = pixels_from_world(map, n), .clip = tile_in_pixels(map, n)};
+        auto frustum = actor_for(geometry_polydata(in.inputs.frustum, in_tile), glm::dvec3(1.0, 0.85, 0.1));
         frustum->GetProperty()->SetLineWidth(2.0f);
         renderer->AddActor(frustum);
     }

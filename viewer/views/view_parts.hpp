@@ -10,6 +10,7 @@
 
 class vtkActor;
 class vtkRenderer;
+class vtkTextProperty;
 
 namespace shadowlab {
 
@@ -24,6 +25,9 @@ vtkSmartPointer<vtkActor> actor_for(const Placed& placed, const glm::dvec3& colo
 void place_scene_camera(vtkRenderer* renderer, const Camera& camera);  // the VTK camera = the scene's
 void show_image(vtkRenderer* renderer, const RgbImage& image);  // one screen square per pixel, crisp
 void add_caption(vtkRenderer* renderer, const std::string& text);
+// Text over a view: a font with γ, ³ and × where one is installed, `size` points, `colour` on a
+// translucent black backing that keeps it legible over any picture.
+void style_overlay_text(vtkTextProperty* text, int size, const glm::dvec3& colour = glm::dvec3(1.0));
 using Rgb = std::array<unsigned char, 3>;
 Rgb heat(double t);  // an inferno-like ramp over t in [0, 1]
 
