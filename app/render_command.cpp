@@ -1,10 +1,13 @@
 #include "render_command.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <stdexcept>
 
 #include "limits.hpp"
 #include "scene/image_size.hpp"
+#include "scene/light.hpp"
 #include "views/offscreen_view.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -25,6 +28,36 @@ AliasingShown aliasing_or_throw(const std::string& name) {
     throw std::invalid_argument("--aliasing: unknown '" + name + "' (one of total, perspective, projection)");
 }
 
+SpacePreset preset_or_throw(const std::string& name) {
+    if (const auto preset = space_preset_named(name)) return *preset;
+    std::string names;
+    for (SpacePreset p : all_space_presets()) names += (names.empty() ? "" : ", ") + std::string(to_string(p));
+    throw std::invalid_argument("--preset: unknown preset '" + name + "' (one of " + names + ")");
+}
+
+// "AZ,EL" in degrees: azimuth about +y from +x toward +z, elevation above the ground plane, as the
+// window's Controls panel reads its sliders (light_direction_from_angles).
+glm::dvec3 light_direction_or_throw(const std::string& text) {
+    double azimuth = 0.0, elevation = 0.0;
+    char end = 0;
+    if (std::sscanf(text.c_str(), "%lf,%lf%c", &azimuth, &elevation, &end) != 2 || !std::isfinite(azimuth) ||
+        !std::isfinite(elevation))
+        throw std::invalid_argument("--light: expected AZ,EL in degrees (e.g. 120,35), got '" + text + "'");
+    if (elevation < -90.0 || elevation > 90.0)
+        throw std::invalid_argument("--light: elevation " + text.substr(text.find(',') + 1) +
+                                    " is outside -90..90 (degrees above the ground plane)");
+    return light_direction_from_angles(azimuth, elevation);
+}
+
+// The scene's light turned to --light; a point light has no direction to turn.
+void turn_light(Scene& scene, const std::string& angles) {
+    if (angles.empty()) return;
+    const glm::dvec3 direction = light_direction_or_throw(angles);
+    if (scene.light.type == LightType::point)
+        throw std::invalid_argument("--light: the scene's light is a point light, which has no direction");
+    scene.light.direction = direction;
+}
+
 }  // namespace
 
 void run_render(const RenderOptions& options) {
@@ -32,7 +65,9 @@ void run_render(const RenderOptions& options) {
     limits::check(limits::image_side, "--size height", options.height);
     const ViewKind view = view_or_throw(options.view);
     const AliasingShown aliasing = aliasing_or_throw(options.aliasing);
-    const Scene scene = load_scene(options.scene_file);
+    const SpacePreset preset = preset_or_throw(options.preset);
+    Scene scene = load_scene(options.scene_file);
+    turn_light(scene, options.light);
     // The camera keeps its aspect: its image is the largest of that shape within --size; the Camera
     // view is drawn at that size, the other views fill --size (their images are letterboxed).
     const glm::ivec2 camera_image = image_size_within(scene.camera, options.width, options.height);
@@ -50,6 +85,8 @@ void run_render(const RenderOptions& options) {
     ViewOptions view_options;
     view_options.step = options.step;
     view_options.aliasing = aliasing;
+    view_options.preset = preset;
+    view_options.scene_in_ppls = options.scene_in_ppls;
     const RgbImage image = render_view(inspection, view, view_options, size.x, size.y);
     write_png(image, options.out);
     std::cerr << "render: " << to_string(view) << " view of " << options.scene_file << " (" << inspection.name();

@@ -1,6 +1,7 @@
 #pragma once
 // `shadowlab render SCENE --method M [--view V] [--step ID] [--size WxH] [--resolution N] [--bias B]
-//  [--aliasing total|perspective|projection] --out FILE.png`
+//  [--aliasing total|perspective|projection] [--light AZ,EL] [--preset orbit|light|side]
+//  [--no-scene-in-ppls] --out FILE.png`
 #include <map>
 #include <string>
 
@@ -16,6 +17,9 @@ struct RenderOptions {
     int resolution = 2048;
     double bias = -1.0;  // world units along the light; < 0: automatic
     std::string aliasing = "total";  // the Error view's heat map: m, or its perspective or projection factor
+    std::string light;  // "AZ,EL" in degrees, as the window's Controls panel: the light's new direction; empty: the scene's
+    std::string preset = "orbit";  // World, Light space, PPLS: how the camera looks (space_preset_named)
+    bool scene_in_ppls = true;     // PPLS: draw the scene's triangles
     std::string out;
 };
 

@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libvtk9-dev libvtk9-qt-dev qtbase5-dev libgl-dev
   xvfb xauth
+  fonts-dejavu-core  # labels and captions: Greek letters (γ, ε) and superscripts the built-in VTK fonts lack
   clang libclang-rt-14-dev llvm  # the sanitizer build and the fuzzer; llvm-symbolizer for their reports
 )
 

@@ -21,4 +21,16 @@ struct Light {
     }
 };
 
+// A directional light's direction by the sky position it shines from: azimuth in degrees about +y,
+// 0 at +x and 90 at +z; elevation in degrees above the ground plane (y = 0). Gives the unit vector
+// the light travels along, from that position down toward the origin.
+glm::dvec3 light_direction_from_angles(double azimuth_deg, double elevation_deg);
+
+// The inverse: the azimuth in [0, 360) and elevation in [-90, 90] of the sky position a light
+// travelling along `direction` (any length) shines from.
+struct LightAngles {
+    double azimuth_deg, elevation_deg;
+};
+LightAngles light_angles(const glm::dvec3& direction);
+
 }  // namespace shadowlab

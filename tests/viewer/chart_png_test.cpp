@@ -22,7 +22,7 @@ struct Image {
     std::vector<unsigned char> pixels;
 };
 
-Image read_png(const std::string& file) {
+Image read_chart(const std::string& file) {
     vtkNew<vtkPNGReader> reader;
     reader->SetFileName(file.c_str());
     reader->Update();
@@ -79,7 +79,7 @@ TEST(ChartPng, TwoSeriesDrawnInTheirColours) {
     const std::string file = temp_png("chart_two_series");
     write_chart_png(chart, file);
 
-    const Image image = read_png(file);
+    const Image image = read_chart(file);
     EXPECT_EQ(image.width, 800);
     EXPECT_EQ(image.height, 500);
     EXPECT_GT(distinct_colors(image), 10u);
@@ -101,7 +101,7 @@ TEST(ChartPng, LogAxesDropNonPositivePoints) {
     chart.series[1].x[0] = -1.0;
     const std::string file = temp_png("chart_log");
     ASSERT_NO_THROW(write_chart_png(chart, file));
-    const Image image = read_png(file);
+    const Image image = read_chart(file);
     EXPECT_EQ(image.width, 800);
     EXPECT_GT(distinct_colors(image), 10u);
     std::filesystem::remove(file);

@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <vtkImageData.h>
-#include <vtkNew.h>
-#include <vtkPNGReader.h>
 
 #include "../cli_support.hpp"
 #include "render/rgb_image.hpp"
@@ -19,12 +17,6 @@ namespace {
 
 std::string scene(const std::string& name) { return std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/" + name; }
 
-RgbImage read_png(const std::string& file) {
-    vtkNew<vtkPNGReader> reader;
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    return from_vtk_image(reader->GetOutput());
-}
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include <vtkImageData.h>
+#include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkRenderWindow.h>
@@ -42,6 +43,17 @@ void write_png(const RgbImage& image, const std::string& file) {
     writer->SetInputData(to_vtk_image(image));
     writer->Write();
     if (writer->GetErrorCode() != 0) throw std::runtime_error("cannot write " + file);
+}
+
+RgbImage read_png(const std::string& file) {
+    vtkNew<vtkPNGReader> reader;
+    if (!reader->CanReadFile(file.c_str())) throw std::runtime_error("cannot read " + file + " as a PNG");
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    vtkImageData* data = reader->GetOutput();
+    if (data->GetNumberOfScalarComponents() != 3 || data->GetScalarType() != VTK_UNSIGNED_CHAR)
+        throw std::runtime_error(file + ": not an 8-bit RGB PNG");
+    return from_vtk_image(data);
 }
 
 RgbImage grab(vtkRenderWindow* window) {

@@ -27,5 +27,7 @@ RgbImage grab(vtkRenderWindow* window);
 
 // Throws std::runtime_error naming the file when it cannot be written.
 void write_png(const RgbImage& image, const std::string& file);
+// An 8-bit RGB PNG, as write_png writes them; throws std::runtime_error naming the file otherwise.
+RgbImage read_png(const std::string& file);
 
 }  // namespace shadowlab

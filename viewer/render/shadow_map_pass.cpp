@@ -16,6 +16,8 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include "render/surface_shading.hpp"
+
 namespace shadowlab {
 namespace {
 
@@ -189,12 +191,8 @@ uniform float shadowSelectionSplitDepths[shadowMaxMaps + 1];
 uniform int shadowSelectionSplitCount;
 uniform vec3 shadowSelectionCentre;
 uniform sampler2D shadowDepth;
-uniform vec4 shadowLight;  // (direction, 0) for a directional light, (position, 1) otherwise
-uniform vec3 shadowEye;
 uniform float shadowBias;  // world units along the light; < 0: slope-scaled per fragment
 uniform int shadowResolution;
-uniform int shadowLitMask;
-in vec4 shadowWorldVSOutput;
 bool shadowInUnitRange(float t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
 bool shadowOnMap(vec4 h) { return h.w > 0.0 && shadowInUnitRange(h.x / h.w) && shadowInUnitRange(h.y / h.w); }
 // 0..5 for +x, -x, +y, -y, +z, -z: the major axis of r (x, then y, on ties) and its sign.
@@ -234,13 +232,6 @@ ivec2 shadowTexelOf(int i, vec2 uv) {
   vec2 t = (tile.xy + uv * (tile.zw - tile.xy)) * float(shadowResolution);
   return ivec2(clamp(floor(t), shadowMapTileTexels[i].xy, shadowMapTileTexels[i].zw));
 }
-vec3 shadowAlongLight(vec3 p) { return shadowLight.w == 0.0 ? shadowLight.xyz : normalize(p - shadowLight.xyz); }
-// The normal of the side the camera sees. From derivatives, which are only defined in uniform
-// control flow: called before the lookup branches.
-vec3 shadowSeenNormal(vec3 p) {
-  vec3 n = normalize(cross(dFdx(p), dFdy(p)));
-  return dot(n, shadowEye - p) < 0.0 ? -n : n;
-}
 vec2 shadowUv(int i, vec3 p) { vec4 h = shadowHomogeneous(i, p); return h.xy / h.w; }
 // uv_derivative: the quotient rule on a linear map's rows; a central difference for a paraboloid.
 vec2 shadowUvDerivative(int i, vec3 p, vec3 direction) {
@@ -252,7 +243,7 @@ vec2 shadowUvDerivative(int i, vec3 p, vec3 direction) {
   return (dh.xy * h.w - h.xy * dh.w) / (h.w * h.w);
 }
 float shadowSlopeScaledBias(int i, vec3 p, vec3 n) {
-  vec3 l = shadowAlongLight(p);
+  vec3 l = surfaceAlongLight(p);
   vec3 a = normalize(cross(l, abs(l.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
   vec3 b = cross(l, a);
   vec2 ja = shadowUvDerivative(i, p, a), jb = shadowUvDerivative(i, p, b);
@@ -268,12 +259,13 @@ float shadowSlopeScaledBias(int i, vec3 p, vec3 n) {
 
 // The lookup, after VTK's lighting: the nearest texel of the selected map's tile against the
 // fragment's depth, biased before the division by w; no map, or off the map or behind its centre,
-// counts as lit.
+// counts as lit. The seen normal comes from derivatives, which are only defined in uniform control
+// flow: taken before the lookup branches. The colour is the shared surface shading's.
 constexpr const char* kLookup = R"(//VTK::Light::Impl
   {
     float lit = 1.0;
-    vec3 p = shadowWorldVSOutput.xyz;
-    vec3 n = shadowSeenNormal(p);
+    vec3 p = surfaceWorldVSOutput.xyz;
+    vec3 n = surfaceSeenNormal(p);
     int i = shadowSelectMap(p);
     if (i >= 0) {
       vec4 h = shadowHomogeneous(i, p);
@@ -283,8 +275,7 @@ constexpr const char* kLookup = R"(//VTK::Light::Impl
         lit = depth > texelFetch(shadowDepth, shadowTexelOf(i, h.xy / h.w), 0).r ? 0.0 : 1.0;
       }
     }
-    if (shadowLitMask == 1) gl_FragData[0] = vec4(vec3(lit), 1.0);
-    else gl_FragData[0].rgb *= mix(0.45, 1.0, lit);
+    gl_FragData[0] = surfaceColour(ambientColor, diffuseColor, opacity, p, n, lit);
   }
 )";
 
@@ -307,8 +298,7 @@ void ShadowMapPass::SetSetup(const ShadowSetup& setup, int resolution) {
 
 void ShadowMapPass::SetBias(double bias, const glm::dvec4& light, const glm::dvec3& eye) {
     bias_ = static_cast<float>(bias);
-    for (int i = 0; i < 4; ++i) light_[i] = static_cast<float>(light[i]);
-    for (int i = 0; i < 3; ++i) eye_[i] = static_cast<float>(eye[i]);
+    frame_ = {.light = glm::vec4(light), .eye = glm::vec3(eye)};
     Modified();
 }
 
@@ -425,12 +415,10 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
                                      "//VTK::PositionVC::Dec\n" + projection + kDepthDeclarations, false);
         return true;
     }
-    vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec", "//VTK::PositionVC::Dec\nout vec4 shadowWorldVSOutput;\n",
-                                 false);
-    vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Impl",
-                                 "//VTK::PositionVC::Impl\n  shadowWorldVSOutput = vertexMC;\n", false);
+    pass_world_position(vertex);
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec",
                                  "//VTK::Light::Dec\n" + projection + kLookupDeclarations, false);
+    declare_surface_shading(fragment);  // before the lookup's declarations, which use it
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", kLookup, false);
     return true;
 }
@@ -451,9 +439,8 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMa
                        program->SetUniform4f("shadowDrawnViewport", glm::value_ptr(maps.viewport[drawn_map_])));
     return all_set(set_projection_uniforms(program, maps), set_lookup_uniforms(program, maps, setup_),
                    program->SetUniformi("shadowDepth", depth_->GetTextureUnit()),
-                   program->SetUniform4f("shadowLight", light_), program->SetUniform3f("shadowEye", eye_),
                    program->SetUniformf("shadowBias", bias_), program->SetUniformi("shadowResolution", resolution_),
-                   program->SetUniformi("shadowLitMask", output_ == Output::lit_mask ? 1 : 0));
+                   set_surface_shading_uniforms(program, frame_, output_ == Output::lit_mask));
 }
 
 void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {

@@ -17,6 +17,7 @@
 #include <vtkSmartPointer.h>
 
 #include "maps/shadow_map.hpp"
+#include "render/surface_shading.hpp"
 
 class vtkOpaquePass;
 class vtkOpenGLFramebufferObject;
@@ -34,7 +35,8 @@ public:
 
     static constexpr int kMaxMaps = 8;  // the shaders' uniform arrays hold this many maps
 
-    // What stage 2 writes: the lit colour dimmed in shadow, or white where lit and black where shadowed.
+    // What stage 2 writes: the surface shading (render/surface_shading.hpp), shadow tinted, or white
+    // where lit and black where shadowed.
     enum class Output { shaded, lit_mask };
 
     // The maps, their tiles and the rule that picks one per point; resolution: texels per side of
@@ -75,8 +77,7 @@ private:
     ShadowSetup setup_;   // no maps until SetSetup: everything lit
     int drawn_map_ = 0;   // stage 1: the map whose tile is being drawn
     float bias_ = -1.0f;
-    float light_[4] = {0.0f, -1.0f, 0.0f, 0.0f};
-    float eye_[3] = {};
+    ShadingFrame frame_;
     int resolution_ = 1024;
     std::vector<vtkProp*> casters_;
     vtkSmartPointer<vtkRenderPass> shade_;

@@ -10,7 +10,10 @@
 #include <vtkOpenGLShaderCache.h>
 #include <vtkOpenGLState.h>
 #include <vtkOpenGLVertexArrayObject.h>
+#include <vtkOpaquePass.h>
+#include <vtkOverlayPass.h>
 #include <vtkRenderState.h>
+#include <vtkRenderStepsPass.h>
 #include <vtkShaderProgram.h>
 #include <vtk_glew.h>
 
@@ -27,18 +30,19 @@ void main() {
 }
 )";
 
-// The volume draws no colour; the darkening quad is blended as destination * alpha.
+// The volume writes no colour (the colour mask is off while it counts).
 constexpr const char* kFragment = R"(//VTK::System::Dec
 //VTK::Output::Dec
-uniform vec4 colour;
-void main() { gl_FragData[0] = colour; }
+void main() { gl_FragData[0] = vec4(0.0); }
 )";
 
-// After the polygons' triangle corners: a full-viewport quad in clip space at depth 1, which with
-// GL_GREATER covers the pixels where the scene drew something, not the background.
-constexpr float kQuad[6][4] = {{-1, -1, 1, 1}, {1, -1, 1, 1}, {1, 1, 1, 1}, {-1, -1, 1, 1}, {1, 1, 1, 1}, {-1, 1, 1, 1}};
-
-constexpr float kShadedKeep = 0.45f;  // as ShadowMapPass dims its shadowed fragments
+// Steps 1 and 3, after VTK's lighting: the scene's fragments shaded as lit or as shadowed.
+constexpr const char* kShade = R"(//VTK::Light::Impl
+  {
+    vec3 p = surfaceWorldVSOutput.xyz;
+    gl_FragData[0] = surfaceColour(ambientColor, diffuseColor, opacity, p, surfaceSeenNormal(p), surfaceLit);
+  }
+)";
 
 // The stencil operations per rule (Everitt and Kilgard 2002, section 4: z-fail; Heidmann: z-pass).
 void set_stencil_ops(vtkOpenGLState* gl, StencilRule rule) {
@@ -80,7 +84,12 @@ bool attach_stencil_buffer() {
 
 vtkStandardNewMacro(StencilVolumePass);
 
-StencilVolumePass::StencilVolumePass() = default;
+StencilVolumePass::StencilVolumePass()
+    : lit_scene_(vtkSmartPointer<vtkRenderStepsPass>::New()),
+      shadowed_scene_(vtkSmartPointer<vtkOpaquePass>::New()),
+      overlay_(vtkSmartPointer<vtkOverlayPass>::New()) {
+    lit_scene_->SetOverlayPass(nullptr);
+}
 
 StencilVolumePass::~StencilVolumePass() = default;
 
@@ -90,15 +99,13 @@ void StencilVolumePass::SetPolygons(const std::vector<HomogeneousPolygon>& polyg
         for (size_t i = 1; i + 1 < p.size(); ++i)
             for (const glm::dvec4& v : {p[0], p[i], p[i + 1]})
                 for (int c = 0; c < 4; ++c) corners_.push_back(static_cast<float>(v[c]));
-    polygon_corners_ = static_cast<int>(corners_.size() / 4);
-    for (const auto& corner : kQuad) corners_.insert(corners_.end(), corner, corner + 4);
     rule_ = rule;
     uploaded_ = false;
     Modified();
 }
 
-void StencilVolumePass::SetScenePass(vtkRenderPass* scene) {
-    scene_ = scene;
+void StencilVolumePass::SetLight(const glm::dvec4& light, const glm::dvec3& eye) {
+    frame_ = {.light = glm::vec4(light), .eye = glm::vec3(eye)};
     Modified();
 }
 
@@ -108,33 +115,31 @@ void StencilVolumePass::SetOutput(Output output) {
 }
 
 void StencilVolumePass::Render(const vtkRenderState* s) {
-    NumberOfRenderedProps = 0;
-    if (!scene_) return;
-    scene_->Render(s);  // 1: the scene, lit, writing depth
-    NumberOfRenderedProps = scene_->GetNumberOfRenderedProps();
+    PreRender(s);
+    lit_ = 1.0f;
+    lit_scene_->Render(s);  // 1: the scene, lit, writing depth
+    NumberOfRenderedProps = lit_scene_->GetNumberOfRenderedProps();
     auto* window = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
-    if (polygon_corners_ == 0) return;
-    vtkShaderProgram* program = prepare(window);
-    if (!program) return;
-    if (!attach_stencil_buffer()) {
-        vtkWarningMacro("the render window has no stencil buffer (SetStencilCapable(1) before its first render): no shadows");
-        return;
+    if (vtkShaderProgram* program = corners_.empty() ? nullptr : prepare(window)) {
+        if (attach_stencil_buffer()) {
+            vtkOpenGLState* gl = window->GetState();
+            vtkOpenGLState::ScopedglEnableDisable stencil_test(gl, GL_STENCIL_TEST);
+            vtkOpenGLState::ScopedglEnableDisable depth_test(gl, GL_DEPTH_TEST);
+            vtkOpenGLState::ScopedglEnableDisable blend(gl, GL_BLEND);
+            vtkOpenGLState::ScopedglEnableDisable cull(gl, GL_CULL_FACE);
+            vtkOpenGLState::ScopedglDepthMask depth_mask(gl);
+            vtkOpenGLState::ScopedglColorMask colour_mask(gl);
+            vtkOpenGLState::ScopedglDepthFunc depth_func(gl);
+            count(s, gl, program);
+            shade_shadowed(s, gl);
+            gl->vtkglStencilFunc(GL_ALWAYS, 0, ~0u);
+            gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        } else {
+            vtkWarningMacro("the render window has no stencil buffer (SetStencilCapable(1) before its first render): no shadows");
+        }
     }
-    vtkOpenGLState* gl = window->GetState();
-    vtkOpenGLState::ScopedglEnableDisable stencil_test(gl, GL_STENCIL_TEST);
-    vtkOpenGLState::ScopedglEnableDisable depth_test(gl, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable blend(gl, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable cull(gl, GL_CULL_FACE);
-    vtkOpenGLState::ScopedglDepthMask depth_mask(gl);
-    vtkOpenGLState::ScopedglColorMask colour_mask(gl);
-    vtkOpenGLState::ScopedglDepthFunc depth_func(gl);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blend_func(gl);
-    vao_->Bind();
-    count(s, gl, program);
-    darken(gl, program);
-    vao_->Release();
-    gl->vtkglStencilFunc(GL_ALWAYS, 0, ~0u);
-    gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    PostRender(s);
+    overlay_->Render(s);  // 4: the captions over it all
 }
 
 vtkShaderProgram* StencilVolumePass::prepare(vtkOpenGLRenderWindow* window) {
@@ -163,8 +168,6 @@ void StencilVolumePass::count(const vtkRenderState* s, vtkOpenGLState* gl, vtkSh
     auto* camera = static_cast<vtkOpenGLCamera*>(s->GetRenderer()->GetActiveCamera());
     camera->GetKeyMatrices(s->GetRenderer(), world_to_view, normals, view_to_clip, world_to_clip);
     program->SetUniformMatrix("worldToClip", world_to_clip);
-    const float no_colour[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    program->SetUniform4f("colour", no_colour);
 
     gl->vtkglStencilMask(~0u);
     glClearStencil(0);
@@ -189,29 +192,46 @@ void StencilVolumePass::count(const vtkRenderState* s, vtkOpenGLState* gl, vtkSh
         glPolygonOffset(0.0f, 8.0f);
     glEnable(GL_DEPTH_CLAMP);
     glEnable(GL_CLIP_DISTANCE0);
-    glDrawArrays(GL_TRIANGLES, 0, polygon_corners_);
+    vao_->Bind();
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(corners_.size() / 4));
+    vao_->Release();
     glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-// 3: dim the scene where the stencil is not 0.
-void StencilVolumePass::darken(vtkOpenGLState* gl, vtkShaderProgram* program) {
-    vtkNew<vtkMatrix4x4> identity;  // the quad is in clip space already
-    program->SetUniformMatrix("worldToClip", identity);
-    const float dim[4] = {0.0f, 0.0f, 0.0f, output_ == Output::lit_mask ? 0.0f : kShadedKeep};
-    program->SetUniform4f("colour", dim);
+// 3: the scene's opaque geometry shaded as shadowed where the stencil is not 0, on the very
+// fragments step 1 drew (the same shader on the same geometry gives the same depth: GL_LEQUAL
+// passes them and nothing behind).
+void StencilVolumePass::shade_shadowed(const vtkRenderState* s, vtkOpenGLState* gl) {
     gl->vtkglStencilFunc(GL_NOTEQUAL, 0, ~0u);
     gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     gl->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    gl->vtkglDepthFunc(GL_GREATER);  // the quad lies at depth 1: only where the scene drew
-    gl->vtkglEnable(GL_BLEND);
-    gl->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_ALPHA, GL_ZERO, GL_ONE);
-    glDrawArrays(GL_TRIANGLES, polygon_corners_, 6);
+    gl->vtkglDepthFunc(GL_LEQUAL);
+    lit_ = 0.0f;
+    shadowed_scene_->Render(s);
+    lit_ = 1.0f;
+}
+
+bool StencilVolumePass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment,
+                                               vtkAbstractMapper*, vtkProp*) {
+    pass_world_position(vertex);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\nuniform float surfaceLit;\n", false);
+    declare_surface_shading(fragment);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", kShade, false);
+    return true;
+}
+
+bool StencilVolumePass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*,
+                                            vtkOpenGLVertexArrayObject*) {
+    const bool lit = program->SetUniformf("surfaceLit", lit_);
+    return set_surface_shading_uniforms(program, frame_, output_ == Output::lit_mask) && lit;
 }
 
 void StencilVolumePass::ReleaseGraphicsResources(vtkWindow* w) {
-    if (scene_) scene_->ReleaseGraphicsResources(w);
+    lit_scene_->ReleaseGraphicsResources(w);
+    shadowed_scene_->ReleaseGraphicsResources(w);
+    overlay_->ReleaseGraphicsResources(w);
     if (vao_) vao_->ReleaseGraphicsResources();
     if (buffer_) buffer_->ReleaseGraphicsResources();
     vao_ = nullptr;

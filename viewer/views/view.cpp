@@ -15,8 +15,6 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkTextActor.h>
-#include <vtkTextProperty.h>
 
 #include "views/view_parts.hpp"
 
@@ -150,17 +148,6 @@ Rgb heat(double t) {
     Rgb out{};
     for (int c = 0; c < 3; ++c) out[c] = static_cast<unsigned char>(stops[i][c] + f * (stops[i + 1][c] - stops[i][c]));
     return out;
-}
-
-void add_caption(vtkRenderer* renderer, const std::string& text) {
-    vtkNew<vtkTextActor> caption;
-    caption->SetInput(text.c_str());
-    caption->GetTextProperty()->SetFontSize(14);
-    caption->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
-    caption->GetTextProperty()->SetBackgroundColor(0.0, 0.0, 0.0);
-    caption->GetTextProperty()->SetBackgroundOpacity(0.5);
-    caption->SetDisplayPosition(8, 8);
-    renderer->AddViewProp(caption);
 }
 
 }  // namespace shadowlab
