@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/inspection_json.hpp"
+#include "io/value_text.hpp"
 #include "math/matrix.hpp"
 #include "measure_command.hpp"
 #include "registry/method.hpp"
@@ -18,26 +19,17 @@
 namespace shadowlab {
 namespace {
 
+// A value after its name: on the same line, or a matrix's aligned rows indented below it.
 std::string format_value(const TraceValue& value, const std::string& indent) {
-    if (const auto* m = std::get_if<glm::dmat4>(&value)) {
-        std::string out;
-        for (int r = 0; r < 4; ++r) {
-            const glm::dvec4 v = row(*m, r);
-            char line[160];
-            std::snprintf(line, sizeof line, "\n%s  [%13.6g %13.6g %13.6g %13.6g]", indent.c_str(), v.x, v.y, v.z, v.w);
-            out += line;
-        }
-        return out;
-    }
-    if (const auto* text = std::get_if<std::string>(&value)) return " " + *text;
-    const Json json = to_json(value);
+    const std::string text = value_text(value);
+    if (!std::holds_alternative<glm::dmat4>(value)) return " " + text;
     std::string out;
-    for (const auto& number : json.is_array() ? json : Json::array({json})) {
-        char buffer[32];
-        std::snprintf(buffer, sizeof buffer, "%.6g", number.get<double>());
-        out += (out.empty() ? "" : ", ") + std::string(buffer);
+    size_t start = 0;
+    for (size_t end = text.find('\n'); start != std::string::npos; end = text.find('\n', start)) {
+        out += "\n" + indent + "  " + text.substr(start, end == std::string::npos ? end : end - start);
+        start = end == std::string::npos ? end : end + 1;
     }
-    return std::holds_alternative<double>(value) ? " " + out : " [" + out + "]";
+    return out;
 }
 
 std::string describe(const NamedGeometry& g) {

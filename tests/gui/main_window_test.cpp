@@ -1,17 +1,36 @@
 // The window as a user drives it: switching the method changes what the views draw; a bad file
-// is reported by name and field while the previous scene stays; a mesh alone becomes a scene.
+// is reported by name and field while the previous scene stays; a mesh alone becomes a scene; the
+// step list fits at 1280 x 800 and shows matrices as aligned grids; the window's matrices are the
+// CLI's; an orbit survives a change of step; the messages take one line until an error.
+#include <QAction>
 #include <QCheckBox>
+#include <QClipboard>
 #include <QComboBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QProcess>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QScrollBar>
 #include <QSettings>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
+#include <QTextBlock>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
+#include <vtkCamera.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 
+#include "gui/camera_pose.hpp"
 #include "gui/controls_panel.hpp"
 #include "gui/main_window.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
+#include "io/inspection_json.hpp"
+#include "math/matrix.hpp"
 
 using namespace shadowlab;
 
@@ -33,6 +52,62 @@ RgbImage flat_like(const RgbImage& image) {
     RgbImage flat(image.width, image.height);
     for (size_t i = 0; i < flat.rgb.size(); i += 3) std::copy_n(image.rgb.begin(), 3, flat.rgb.begin() + i);
     return flat;
+}
+
+// The map matrix `shadowlab inspect --json` prints for the scene, method and settings (rows);
+// throws with the CLI's error output if it fails.
+glm::dmat4 cli_world_to_uvz(const QString& scene, const InspectionRequest& request) {
+    QStringList arguments{"inspect", scene, "--method", QString::fromStdString(request.method), "--json"};
+    for (const auto& [key, value] : request.settings) arguments << "--set" << QString::fromStdString(key + "=" + value);
+    QProcess cli;
+    cli.start(SHADOWLAB_CLI, arguments);
+    if (!cli.waitForFinished(60000) || cli.exitCode() != 0)
+        throw std::runtime_error(request.method + ": " + cli.readAllStandardError().toStdString());
+    const Json rows = Json::parse(cli.readAllStandardOutput().toStdString())["maps"][0]["world_to_uvz"];
+    glm::dmat4 m;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) m[c][r] = rows[r][c].get<double>();
+    return m;
+}
+
+// A grid's text as numbers, cells[row][column], and where each line's cells end (right-aligned
+// columns end at the same character on every line).
+struct ParsedGrid {
+    double cells[4][4];
+    std::vector<std::vector<qsizetype>> cell_ends;
+};
+
+std::optional<ParsedGrid> parse_grid(const QStringList& lines) {
+    if (lines.size() != 4) return std::nullopt;
+    ParsedGrid grid{.cells = {}, .cell_ends = std::vector<std::vector<qsizetype>>(4)};
+    const QRegularExpression number("\\S+");
+    for (int r = 0; r < 4; ++r) {
+        int c = 0;
+        for (auto match = number.globalMatch(lines[r]); match.hasNext(); ++c) {
+            const QRegularExpressionMatch cell = match.next();
+            bool ok = false;
+            if (c < 4) grid.cells[r][c] = cell.captured().toDouble(&ok);
+            if (!ok) return std::nullopt;
+            grid.cell_ends[r].push_back(cell.capturedEnd());
+        }
+        if (c != 4) return std::nullopt;
+    }
+    return grid;
+}
+
+bool same_pose(const CameraPose& a, const CameraPose& b) {
+    constexpr double kClose = 1e-9;
+    return glm::length(a.position - b.position) < kClose * std::max(1.0, glm::length(a.position)) &&
+           glm::length(a.focal_point - b.focal_point) < kClose * std::max(1.0, glm::length(a.focal_point)) &&
+           glm::length(a.view_up - b.view_up) < kClose && std::abs(a.view_angle - b.view_angle) < kClose &&
+           std::abs(a.parallel_scale - b.parallel_scale) < kClose * a.parallel_scale &&
+           a.parallel_projection == b.parallel_projection;
+}
+
+vtkRenderWindow* render_window(ViewPanel* panel) { return panel->findChild<QVTKOpenGLNativeWidget*>()->renderWindow(); }
+
+vtkCamera* view_camera(ViewPanel* panel) {
+    return render_window(panel)->GetRenderers()->GetFirstRenderer()->GetActiveCamera();
 }
 
 }  // namespace
@@ -161,6 +236,177 @@ private slots:
                                                   ": the panel is one flat colour"));
             }
         }
+    }
+
+    // At 1280 x 800 the step list shows every step of XPSM, the longest trace, with no scroll bar.
+    void theStepListShowsEveryRowAt1280x800() {
+        window_->resize(1280, 800);
+        QComboBox* selector = window_->controls()->method_selector();
+        selector->setCurrentIndex(selector->findData("xpsm"));
+        for (const char* scene : {"data/scenes/box_on_plane.json", "data/scenes/default.json"}) {
+            QVERIFY(window_->open_file(source(scene)));
+            QApplication::processEvents();
+            QCOMPARE(window_->size(), QSize(1280, 800));
+            auto* list = window_->steps()->findChild<QListWidget*>("steps");
+            QVERIFY(list && list->count() > 20);
+            QVERIFY2(!list->horizontalScrollBar()->isVisible() && !list->verticalScrollBar()->isVisible(), scene);
+            for (int row = 0; row < list->count(); ++row)
+                QVERIFY2(list->viewport()->rect().contains(list->visualItemRect(list->item(row))),
+                         qPrintable(QString("%1: step %2 lies outside the list").arg(scene).arg(row + 1)));
+        }
+    }
+
+    // The map step's matrix as a 4 x 4 grid of right-aligned columns in a fixed-pitch font, each cell
+    // the entry to 4 significant digits; copied, every entry exactly; as the papers print it, the
+    // transpose.
+    void matricesShowAsAlignedGridsAndCopyAtFullPrecision() {
+        const Step& output = window_->inspection()->trace.steps().back();
+        QCOMPARE(window_->steps()->chosen(), QString::fromStdString(output.id));
+        const auto matrix = std::find_if(output.values.begin(), output.values.end(),
+                                         [](const NamedValue& v) { return std::holds_alternative<glm::dmat4>(v.value); });
+        QVERIFY(matrix != output.values.end());
+        const glm::dmat4 m = std::get<glm::dmat4>(matrix->value);
+        const QString name = QString::fromStdString(matrix->name);
+        for (const MatrixLayout layout : {MatrixLayout::column_vectors, MatrixLayout::row_vectors}) {
+            window_->steps()->set_matrix_layout(layout);
+            const glm::dmat4 printed = layout == MatrixLayout::column_vectors ? m : glm::transpose(m);  // printed row by row
+            const auto* label = window_->steps()->findChild<QLabel*>(name);
+            QVERIFY(label && QFontInfo(label->font()).fixedPitch());
+            const std::optional<ParsedGrid> shown = parse_grid(label->text().split('\n'));
+            QVERIFY2(shown, qPrintable(label->text()));
+            for (int r = 0; r < 4; ++r) {
+                QCOMPARE(shown->cell_ends[r], shown->cell_ends[0]);
+                for (int c = 0; c < 4; ++c) {
+                    const double entry = row(printed, r)[c];
+                    QVERIFY2(std::abs(shown->cells[r][c] - entry) <= 5e-4 * std::abs(entry),
+                             qPrintable(QString("cell %1, %2: %3 for %4").arg(r).arg(c).arg(shown->cells[r][c]).arg(entry)));
+                }
+            }
+            window_->steps()->findChild<QPushButton*>("copyValues")->click();
+            const QStringList copied = QApplication::clipboard()->text().split('\n');
+            const qsizetype at = copied.indexOf(name + ":");
+            QVERIFY(at >= 0);
+            const std::optional<ParsedGrid> full = parse_grid(copied.mid(at + 1, 4));
+            QVERIFY(full);
+            for (int r = 0; r < 4; ++r)
+                for (int c = 0; c < 4; ++c) QCOMPARE(full->cells[r][c], row(printed, r)[c]);
+        }
+    }
+
+    // Idle, the Messages dock is one line tall and shows the newest message; an error opens it to a
+    // few lines until the next change computes.
+    void theMessagesTakeOneLineUntilAnError() {
+        auto* messages = window_->findChild<QPlainTextEdit*>("messages");
+        const int line = messages->fontMetrics().lineSpacing();
+        const auto lines_shown = [messages, line] { return messages->viewport()->height() / line; };
+        const auto newest_shows = [this, messages] {
+            const QPoint bottom_line(messages->viewport()->width() / 2, messages->viewport()->height() - 6);
+            return messages->cursorForPosition(bottom_line).block().text().endsWith(window_->last_message());
+        };
+        QCOMPARE(lines_shown(), 1);
+        QVERIFY(newest_shows());
+        QVERIFY(!window_->open_file(source("tests/data/bad/negative_size.json")));
+        QApplication::processEvents();
+        QVERIFY(lines_shown() >= 3);
+        QVERIFY(newest_shows());
+        QVERIFY(window_->open_file(source("data/scenes/box_on_plane.json")));
+        QApplication::processEvents();
+        QCOMPARE(lines_shown(), 1);
+        QVERIFY(newest_shows());
+    }
+
+    // For every map method the window's matrix is the one `shadowlab inspect --json` prints, though
+    // the Camera panel's shape is not the scene camera's: the panel letterboxes. Unlocked, the
+    // aspect is the panel's, the matrix changes and the status line says where the aspect comes from.
+    void theWindowsMatricesAreTheClis() {
+        window_->resize(1600, 1000);
+        const QString scene = source("data/scenes/default.json");
+        QVERIFY(window_->open_file(scene));
+        QApplication::processEvents();
+        for (const Method& method : all_methods()) {
+            if (!method.makes_maps()) continue;
+            window_->controls()->set_method(QString::fromStdString(method.name));
+            QApplication::processEvents();
+            const InspectionRequest request = window_->controls()->request();
+            QCOMPARE(window_->inspection()->name(), method.name);
+            try {
+                QVERIFY2(window_->inspection()->setup.maps[0].world_to_uvz == cli_world_to_uvz(scene, request),
+                         method.name.c_str());  // the CLI prints every double in full: the same bits
+            } catch (const std::exception& e) {
+                QFAIL(e.what());
+            }
+            QVERIFY(window_->statusBar()->currentMessage().contains("aspect 1.78 from the scene"));
+        }
+        const glm::dmat4 locked = window_->inspection()->setup.maps[0].world_to_uvz;
+        auto* aspect = window_->controls()->findChild<QComboBox*>("aspect");
+        aspect->setCurrentIndex(aspect->findData(false));  // the Camera panel's
+        QApplication::processEvents();
+        const QSize panel = panel_showing(ViewKind::camera)->drawing_size();
+        const double panel_aspect = static_cast<double>(panel.width()) / panel.height();
+        QVERIFY2(std::abs(panel_aspect - window_->scene().camera.aspect) > 0.05, "the test needs a panel of another shape");
+        QCOMPARE(window_->inspection()->scene.camera.aspect, panel_aspect);
+        QVERIFY(window_->inspection()->setup.maps[0].world_to_uvz != locked);
+        const QString status = window_->statusBar()->currentMessage();
+        const QString said = QString("aspect %1 from the Camera panel").arg(panel_aspect, 0, 'f', 2);
+        QVERIFY2(status.contains(said), qPrintable(status));
+        window_->resize(1300, 1000);  // the aspect follows the panel once the resize settles
+        QTRY_VERIFY(window_->inspection()->scene.camera.aspect != panel_aspect);
+        const QSize resized = panel_showing(ViewKind::camera)->drawing_size();
+        QCOMPARE(window_->inspection()->scene.camera.aspect, static_cast<double>(resized.width()) / resized.height());
+    }
+
+    // An orbit the user leaves in the Light space panel survives another step and another method;
+    // choosing a preset puts the preset's own camera back.
+    void theCameraIsKeptBetweenSteps() {
+        ViewPanel* light = panel_showing(ViewKind::light);
+        const CameraPose placed = CameraPose::of(view_camera(light));
+        const auto leave_an_orbit = [light] {  // a drag with the left button: the trackball turns the camera
+            auto* widget = light->findChild<QVTKOpenGLNativeWidget*>();
+            const QPoint from = widget->rect().center(), to = from + QPoint(60, 30);
+            QMouseEvent press(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+            QMouseEvent move(QEvent::MouseMove, to, Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+            QMouseEvent release(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton, Qt::NoModifier);
+            for (QMouseEvent* event : {&press, &move, &release}) QApplication::sendEvent(widget, event);
+            return CameraPose::of(view_camera(light));
+        };
+        const CameraPose left = leave_an_orbit();
+        QVERIFY(!same_pose(left, placed));
+        const int last = window_->steps()->findChild<QListWidget*>("steps")->count() - 1;
+        window_->steps()->choose(1);
+        QApplication::processEvents();
+        QVERIFY2(same_pose(CameraPose::of(view_camera(light)), left), "another step moved the camera");
+        window_->steps()->choose(last);
+        QApplication::processEvents();
+        QVERIFY(same_pose(CameraPose::of(view_camera(light)), left));
+        auto* preset = light->findChild<QComboBox*>("presetChooser");
+        emit preset->activated(preset->currentIndex());  // the user chooses the preset again
+        QApplication::processEvents();
+        QVERIFY2(same_pose(CameraPose::of(view_camera(light)), placed), "choosing the preset kept the user's camera");
+        const CameraPose left_again = leave_an_orbit();
+        QComboBox* selector = window_->controls()->method_selector();
+        selector->setCurrentIndex(selector->findData("lispsm"));
+        QApplication::processEvents();
+        QVERIFY2(same_pose(CameraPose::of(view_camera(light)), left_again), "another method moved the camera");
+    }
+
+    // View > Before/after warp: Light space beside PPLS in the lower panels, both from the side.
+    void beforeAfterWarpShowsLightSpaceAndPplsFromTheSide() {
+        window_->findChild<QAction*>("beforeAfterWarp")->trigger();
+        QApplication::processEvents();
+        const std::vector<ViewPanel*>& panels = window_->panels();
+        QCOMPARE(static_cast<int>(panels[2]->view()), static_cast<int>(ViewKind::light));
+        QCOMPARE(static_cast<int>(panels[3]->view()), static_cast<int>(ViewKind::ppls));
+        for (ViewPanel* panel : {panels[2], panels[3]})
+            QCOMPARE(static_cast<int>(panel->preset()), static_cast<int>(SpacePreset::side));
+    }
+
+    // "Shadow only" redraws the Camera view as its lit mask.
+    void shadowOnlyRedrawsTheCameraView() {
+        ViewPanel* camera = panel_showing(ViewKind::camera);
+        const RgbImage shaded = camera->grab();
+        window_->controls()->findChild<QCheckBox*>("shadowOnly")->setChecked(true);
+        QApplication::processEvents();
+        QVERIFY2(changed_share(shaded, camera->grab()) > 0.2, "the Camera view did not change to the lit mask");
     }
 
     void choosingAStepHighlightsItsGeometry() {

@@ -12,6 +12,8 @@
 #include <QSlider>
 #include <QVBoxLayout>
 
+#include "scene/light.hpp"
+
 namespace shadowlab {
 namespace {
 
@@ -49,7 +51,9 @@ ControlsPanel::ControlsPanel(QWidget* parent)
       azimuth_(slider(0, 359, this)),
       elevation_(slider(1, 90, this)),
       light_label_(new QLabel(this)),
-      camera_in_shadow_(new QCheckBox("Camera in shadow", this)) {
+      camera_in_shadow_(new QCheckBox("Camera in shadow", this)),
+      aspect_(new QComboBox(this)),
+      shadow_only_(new QCheckBox("Shadow only", this)) {
     method_->setObjectName("methodSelector");
     // The registry's order: the maps, a separator, the geometric techniques.
     for (const Method& m : all_methods()) {
@@ -63,6 +67,13 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     }
     camera_in_shadow_->setObjectName("cameraInShadow");
     camera_in_shadow_->setToolTip("move the camera into a caster's shadow volume: z-pass counts go wrong there, z-fail holds");
+    aspect_->setObjectName("aspect");
+    aspect_->addItem("scene (locked)", true);
+    aspect_->addItem("Camera panel", false);
+    aspect_->setToolTip("the camera's aspect the method computes with: the scene's, as `shadowlab inspect` does (the "
+                        "Camera panel letterboxes), or the Camera panel's shape");
+    shadow_only_->setObjectName("shadowOnly");
+    shadow_only_->setToolTip("the Camera view's shadows alone: white where lit, black where shadowed");
     method_->setCurrentText("focused");
     for (int r : {128, 256, 512, 1024, 2048, 4096}) resolution_->addItem(QString::number(r) + "²", r);
     resolution_->setCurrentIndex(3);
@@ -80,7 +91,9 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     general->addRow("Method", method_);
     general->addRow("Map", resolution_);
     general->addRow("Bias", bias_);
+    general->addRow("Aspect", aspect_);
     general->addRow(camera_in_shadow_);
+    general->addRow(shadow_only_);
     auto* light = new QGroupBox("Light direction", this);
     auto* light_form = new QFormLayout(light);
     light_form->addRow("Azimuth", azimuth_);
@@ -99,6 +112,8 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     });
     connect(resolution_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::changed);
     connect(camera_in_shadow_, &QCheckBox::toggled, this, &ControlsPanel::cameraInShadowToggled);
+    connect(aspect_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::aspectChanged);
+    connect(shadow_only_, &QCheckBox::toggled, this, &ControlsPanel::shadowOnlyToggled);
     connect(bias_, &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
     for (QSlider* s : {azimuth_, elevation_}) connect(s, &QSlider::valueChanged, this, [this] {
         const glm::dvec3 d = light_direction();
@@ -142,21 +157,22 @@ InspectionRequest ControlsPanel::request() const {
 }
 
 glm::dvec3 ControlsPanel::light_direction() const {
-    const double az = glm::radians(static_cast<double>(azimuth_->value()));
-    const double el = glm::radians(static_cast<double>(elevation_->value()));
-    return -glm::dvec3(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
+    return light_direction_from_angles(azimuth_->value(), elevation_->value());
 }
 
 void ControlsPanel::set_light_direction(const glm::dvec3& direction) {
-    const glm::dvec3 to_light = -glm::normalize(direction);
+    const LightAngles angles = light_angles(direction);
     const QSignalBlocker block_a(azimuth_), block_e(elevation_);
-    elevation_->setValue(static_cast<int>(std::lround(glm::degrees(std::asin(std::clamp(to_light.y, -1.0, 1.0))))));
-    int az = static_cast<int>(std::lround(glm::degrees(std::atan2(to_light.z, to_light.x))));
-    azimuth_->setValue((az + 360) % 360);
+    elevation_->setValue(static_cast<int>(std::lround(angles.elevation_deg)));
+    azimuth_->setValue(static_cast<int>(std::lround(angles.azimuth_deg)) % 360);
     light_label_->setText(QString("(%1, %2, %3)").arg(direction.x, 0, 'f', 3).arg(direction.y, 0, 'f', 3).arg(direction.z, 0, 'f', 3));
 }
 
 bool ControlsPanel::camera_in_shadow() const { return camera_in_shadow_->isChecked(); }
+
+bool ControlsPanel::aspect_locked() const { return aspect_->currentData().toBool(); }
+
+bool ControlsPanel::shadow_only() const { return shadow_only_->isChecked(); }
 
 void ControlsPanel::clear_camera_in_shadow() {
     const QSignalBlocker block(camera_in_shadow_);

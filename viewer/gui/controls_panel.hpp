@@ -1,7 +1,8 @@
 #pragma once
 // The controls: method (the map methods, then the geometric techniques), its settings (each within
-// its declared range), map resolution, depth bias, the light's direction as azimuth and elevation,
-// and for shadow volumes a toggle that moves the camera into a shadow.
+// its declared range), map resolution, depth bias, the camera's aspect (the scene's, locked, or the
+// Camera panel's), the light's direction as azimuth and elevation, for shadow volumes a toggle that
+// moves the camera into a shadow, and a toggle that shows the Camera view's shadows alone.
 #include <QWidget>
 #include <glm/glm.hpp>
 
@@ -28,12 +29,16 @@ public:
     void set_resolution(int resolution);
     QComboBox* method_selector() const { return method_; }
     bool camera_in_shadow() const;
+    bool aspect_locked() const;  // the scene camera's aspect, as the CLI computes; else the Camera panel's
+    bool shadow_only() const;    // the Camera view as a lit mask: white lit, black shadowed
     void clear_camera_in_shadow();  // without emitting cameraInShadowToggled()
 
 signals:
     void changed();       // any setting
     void lightChanged();  // the direction widget
     void cameraInShadowToggled(bool inside);
+    void aspectChanged();
+    void shadowOnlyToggled();
 
 private:
     void rebuild_settings();
@@ -47,6 +52,8 @@ private:
     QSlider* elevation_;
     QLabel* light_label_;
     QCheckBox* camera_in_shadow_;
+    QComboBox* aspect_;
+    QCheckBox* shadow_only_;
 };
 
 }  // namespace shadowlab

@@ -15,6 +15,7 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTime>
+#include <QTimer>
 #include <fstream>
 #include <utility>
 
@@ -31,6 +32,9 @@ namespace shadowlab {
 namespace {
 
 constexpr int kMaxRecent = 8;
+constexpr int kIdleMessageLines = 1;   // the views get the height
+constexpr int kErrorMessageLines = 4;  // an error opens the messages until the next good change
+constexpr int kResizeSettleMs = 250;
 
 Scene load_any(const QString& path) {
     const std::string file = path.toStdString();
@@ -65,11 +69,18 @@ MainWindow::MainWindow(QWidget* parent)
       controls_(new ControlsPanel(this)),
       steps_(new StepPlayer(this)),
       plot_(new PlotPanel(this)),
-      messages_(new QPlainTextEdit(this)) {
+      messages_(new QPlainTextEdit(this)),
+      aspect_timer_(new QTimer(this)) {
     setWindowTitle("ShadowLab");
     setAcceptDrops(true);
     messages_->setReadOnly(true);
     messages_->setObjectName("messages");
+    messages_->setLineWrapMode(QPlainTextEdit::NoWrap);  // one message a line: the newest shows when idle
+    messages_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    fit_messages(kIdleMessageLines);
+    aspect_timer_->setSingleShot(true);
+    aspect_timer_->setInterval(kResizeSettleMs);
+    connect(aspect_timer_, &QTimer::timeout, this, &MainWindow::follow_panel_aspect);
 
     // Four linked views: World | Camera over Light space | Shadow map; each can show any view.
     auto* rows = new QSplitter(Qt::Vertical, this);
@@ -78,7 +89,11 @@ MainWindow::MainWindow(QWidget* parent)
         for (ViewKind v : {pair.first, pair.second}) {
             auto* panel = new ViewPanel(v, row);
             panels_.push_back(panel);
-            connect(panel, &ViewPanel::viewChosen, this, [this, panel] { redraw(panel); });
+            connect(panel, &ViewPanel::viewChosen, this, [this, panel] {
+                redraw(panel);
+                aspect_timer_->start();  // the Camera view may have moved to another panel
+            });
+            connect(panel, &ViewPanel::resized, aspect_timer_, QOverload<>::of(&QTimer::start));
             connect(panel, &ViewPanel::cameraMoved, this,
                     [this](const glm::dvec3& p, const glm::dvec3& t, const glm::dvec3& u) {
                         scene_.camera.position = p, scene_.camera.target = t, scene_.camera.up = u;
@@ -95,11 +110,10 @@ MainWindow::MainWindow(QWidget* parent)
     splitters_.push_back(rows);
     setCentralWidget(rows);
 
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);  // every step of the longest trace shows
     addDockWidget(Qt::LeftDockWidgetArea, dock("Controls", "controlsDock", controls_, this));
     addDockWidget(Qt::RightDockWidgetArea, dock("Steps", "stepsDock", steps_, this));
-    QDockWidget* messages_dock = dock("Messages", "messagesDock", messages_, this);
-    addDockWidget(Qt::BottomDockWidgetArea, messages_dock);
-    resizeDocks({messages_dock}, {110}, Qt::Vertical);  // the views get the height
+    addDockWidget(Qt::BottomDockWidgetArea, dock("Messages", "messagesDock", messages_, this));
     QDockWidget* plot_dock = dock("Plot", "plotDock", plot_, this);
     addDockWidget(Qt::BottomDockWidgetArea, plot_dock);
     plot_dock->hide();  // measured on demand: View > Plot
@@ -112,6 +126,11 @@ MainWindow::MainWindow(QWidget* parent)
         recompute();
     });
     connect(controls_, &ControlsPanel::cameraInShadowToggled, this, &MainWindow::put_camera_in_shadow);
+    connect(controls_, &ControlsPanel::aspectChanged, this, &MainWindow::recompute);
+    connect(controls_, &ControlsPanel::shadowOnlyToggled, this, [this] {
+        for (ViewPanel* panel : panels_)
+            if (panel->view() == ViewKind::camera) redraw(panel);
+    });
     connect(steps_, &StepPlayer::stepChosen, this, [this] {  // only the views that draw steps: the
         for (ViewPanel* panel : panels_)                     // Error view would trace its reference again
             if (shows_steps(panel->view())) redraw(panel);
@@ -149,6 +168,10 @@ void MainWindow::build_menus() {
     file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
     QMenu* view = menuBar()->addMenu("&View");
     for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
+    view->addSeparator();
+    QAction* before_after = view->addAction("&Before/after warp", this, &MainWindow::show_before_after_warp);
+    before_after->setObjectName("beforeAfterWarp");
+    before_after->setToolTip("the lower panels: Light space and PPLS, both from the side");
 }
 
 bool MainWindow::open_file(const QString& path) {
@@ -159,6 +182,7 @@ bool MainWindow::open_file(const QString& path) {
         const std::optional<Camera> outside = std::exchange(camera_outside_, std::nullopt);
         controls_->clear_camera_in_shadow();
         inspection_.reset();
+        for (ViewPanel* panel : panels_) panel->forget_camera();
         recompute();
         if (!inspection_) {  // the new scene cannot be inspected: back to the old one
             std::swap(scene_, loaded);
@@ -176,16 +200,39 @@ bool MainWindow::open_file(const QString& path) {
     }
 }
 
+MainWindow::AspectInForce MainWindow::aspect_in_force() const {
+    if (controls_->aspect_locked()) return {scene_.camera.aspect, "the scene"};
+    const ViewPanel* panel = camera_panel();
+    const QSize size = panel ? panel->drawing_size() : QSize();
+    if (size.isEmpty()) return {scene_.camera.aspect, "the scene (no Camera panel to follow)"};
+    return {static_cast<double>(size.width()) / size.height(), "the Camera panel"};
+}
+
+ViewPanel* MainWindow::camera_panel() const {
+    for (ViewPanel* panel : panels_)
+        if (panel->view() == ViewKind::camera) return panel;
+    return nullptr;
+}
+
+// Unlocked, the aspect follows the Camera panel: recompute once a resize settles, if it changed.
+void MainWindow::follow_panel_aspect() {
+    if (inspection_ && aspect_in_force().aspect != inspection_->scene.camera.aspect) recompute();
+}
+
 void MainWindow::recompute() {
     if (scene_.objects.empty()) return;
     const InspectionRequest request = controls_->request();
+    const AspectInForce aspect = aspect_in_force();
     try {
         const BusyNotice busy(statusBar(), QString::fromStdString("computing " + request.method));
-        inspection_ = inspect_scene(scene_, request);
+        Scene computed = scene_;
+        computed.camera.aspect = aspect.aspect;
+        inspection_ = inspect_scene(computed, request);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);
         return;
     }
+    fit_messages(kIdleMessageLines);
     steps_->set_trace(inspection_->trace);
     const std::string bias = inspection_->bias < 0.0 ? "slope-scaled" : std::to_string(inspection_->bias);
     const std::string what = inspection_->has_map()
@@ -195,14 +242,15 @@ void MainWindow::recompute() {
     const std::string notes_label = inspection_->has_map() ? "fallback: " : "limits: ";
     const std::vector<Note>& notes = inspection_->notes();
     const std::string told = notes_label + (notes.empty() ? "none" : describe(notes));
-    statusBar()->showMessage(QString::fromStdString(inspection_->title() + " — " + what + " — " + told));
+    statusBar()->showMessage(QString::fromStdString(inspection_->title() + " — " + what + " — " + told) +
+                             QString(" — aspect %1 from %2").arg(aspect.aspect, 0, 'f', 2).arg(aspect.source));
     if (!notes.empty()) message(QString::fromStdString(told), false);
     redraw();
     if (plot_->isVisible() && inspection_->has_map()) {
         try {
             const BusyNotice busy(statusBar(), "plot: measuring " + QString::fromStdString(request.method) +
                                                    " at 256² to 2048² against the exact reference");
-            plot_->update_plot(scene_, inspection_->method->name, request.settings);
+            plot_->update_plot(inspection_->scene, inspection_->method->name, request.settings);
         } catch (const std::exception& e) {
             message(QString("plot: ") + e.what(), true);
         }
@@ -245,6 +293,7 @@ void MainWindow::redraw(ViewPanel* panel) {
     if (!inspection_) return;
     ViewOptions options;
     options.step = steps_->chosen().toStdString();
+    options.lit_mask = controls_->shadow_only();
     try {
         for (const std::string& note : panel->show(*inspection_, options).notes)
             message(QString(view_title(panel->view())) + ": " + QString::fromStdString(note), false);
@@ -256,7 +305,25 @@ void MainWindow::redraw(ViewPanel* panel) {
 void MainWindow::message(const QString& text, bool error) {
     last_message_ = text;
     messages_->appendPlainText(QTime::currentTime().toString("HH:mm:ss ") + (error ? "error: " : "") + text);
-    if (error) statusBar()->showMessage("error: " + text);
+    messages_->moveCursor(QTextCursor::End);  // the newest line shows
+    messages_->ensureCursorVisible();
+    if (!error) return;
+    statusBar()->showMessage("error: " + text);
+    fit_messages(kErrorMessageLines);
+}
+
+void MainWindow::fit_messages(int lines) {
+    const int margins = 2 * (messages_->frameWidth() + static_cast<int>(messages_->document()->documentMargin()));
+    messages_->setFixedHeight(lines * messages_->fontMetrics().lineSpacing() + margins);
+}
+
+// Light space beside PPLS in the lower panels, both from the side: the scene before and after the warp.
+void MainWindow::show_before_after_warp() {
+    for (const auto& [panel, view] : {std::pair{panels_[2], ViewKind::light}, std::pair{panels_[3], ViewKind::ppls}}) {
+        panel->set_view(view);
+        panel->set_preset(SpacePreset::side);
+        redraw(panel);
+    }
 }
 
 void MainWindow::open_dialog() {

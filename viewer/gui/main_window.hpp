@@ -1,7 +1,9 @@
 #pragma once
 // The inspector's window: controls on the left, four linked views in the middle, the step player
-// on the right, messages and the plot below. Every change recomputes the method once and redraws
-// all views from that one Inspection.
+// on the right (the full height), messages (one line until an error) and the plot below. Every
+// change recomputes the method once and redraws all views from that one Inspection. The method
+// computes with the scene camera's aspect, as the CLI does, unless the user unlocks it: then with
+// the Camera panel's shape, recomputed as the panel is resized.
 #include <optional>
 #include <QMainWindow>
 
@@ -11,6 +13,7 @@
 class QMenu;
 class QPlainTextEdit;
 class QSplitter;
+class QTimer;
 
 namespace shadowlab {
 
@@ -41,13 +44,24 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    // The camera aspect the method computes with, and where it comes from (for the status line).
+    struct AspectInForce {
+        double aspect;
+        const char* source;
+    };
+
     void build_menus();
+    AspectInForce aspect_in_force() const;
+    ViewPanel* camera_panel() const;  // the first panel showing the Camera view, or nullptr
+    void follow_panel_aspect();
     void recompute();
+    void show_before_after_warp();
     void move_light_to(const glm::dvec3& point);
     void put_camera_in_shadow(bool inside);
     void redraw();
     void redraw(ViewPanel* panel);
     void message(const QString& text, bool error);
+    void fit_messages(int lines);
     void open_dialog();
     void export_view(ViewPanel* panel);
     void export_matrices(MatrixFormat format, bool to_clipboard);
@@ -65,6 +79,7 @@ private:
     std::vector<ViewPanel*> panels_;
     std::vector<QSplitter*> splitters_;
     QMenu* recent_menu_ = nullptr;
+    QTimer* aspect_timer_;  // a resize recomputes once it settles, not on every step of a drag
     QString last_message_;
 };
 

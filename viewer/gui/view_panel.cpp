@@ -1,5 +1,6 @@
 #include "gui/view_panel.hpp"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QImage>
@@ -22,11 +23,28 @@
 #include "scene/image_size.hpp"
 
 namespace shadowlab {
+namespace {
+
+// The views drawn in a space of the method (World, Light space, PPLS): they take a preset.
+bool is_space_view(ViewKind view) { return view == ViewKind::world || view == ViewKind::light || view == ViewKind::ppls; }
+
+const char* preset_title(SpacePreset preset) {
+    switch (preset) {
+        case SpacePreset::orbit: return "Orbit";
+        case SpacePreset::from_light: return "From the light";
+        case SpacePreset::side: return "Side";
+    }
+    return "";
+}
+
+}  // namespace
 
 ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     : QWidget(parent),
       chooser_(new QComboBox(this)),
       aliasing_(new QComboBox(this)),
+      preset_(new QComboBox(this)),
+      scene_in_ppls_(new QCheckBox("Scene in PPLS", this)),
       widget_(new QVTKOpenGLNativeWidget(this)) {
     for (ViewKind v : all_views()) chooser_->addItem(view_title(v), static_cast<int>(v));
     chooser_->setObjectName("viewChooser");
@@ -36,11 +54,16 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     aliasing_->setObjectName("aliasingChooser");
     aliasing_->setToolTip("Lloyd's m, or its part a parameterization sets (perspective) or the surface's tilt sets "
                           "(projection)");
-    // Only the Error view paints aliasing: the second chooser shows with it, however it was chosen.
-    const auto show_aliasing_with_error_view = [this] { aliasing_->setVisible(view() == ViewKind::error); };
-    connect(chooser_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, show_aliasing_with_error_view);
+    for (SpacePreset p : all_space_presets()) preset_->addItem(preset_title(p), static_cast<int>(p));
+    preset_->setObjectName("presetChooser");
+    preset_->setToolTip("a free perspective orbit; orthographic along the light (what the map sees); or orthographic "
+                        "from the side, in the plane of the light and the view direction (where a warp shows)");
+    scene_in_ppls_->setObjectName("sceneInPpls");
+    scene_in_ppls_->setChecked(ViewOptions{}.scene_in_ppls);
+    scene_in_ppls_->setToolTip("draw the scene's triangles in post-perspective light space (clipped near the unit cube)");
+    connect(chooser_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ViewPanel::show_choosers_for_view);
     set_view(initial);
-    show_aliasing_with_error_view();
+    show_choosers_for_view();
     vtkNew<vtkGenericOpenGLRenderWindow> window;
     window_ = window;
     window_->SetStencilCapable(1);  // the stencil shadow pass (before the first render)
@@ -52,21 +75,53 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     auto* choosers = new QHBoxLayout;
     choosers->addWidget(chooser_, 1);
     choosers->addWidget(aliasing_);
+    choosers->addWidget(preset_);
+    choosers->addWidget(scene_in_ppls_);
     layout->addLayout(choosers);
     layout->addWidget(widget_, 1);
-    connect(chooser_, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
+    for (QComboBox* box : {chooser_, preset_}) connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] {
+        forget_camera();  // another view or preset starts from its own camera
+        emit viewChosen();
+    });
     connect(aliasing_, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
+    connect(scene_in_ppls_, &QCheckBox::toggled, this, [this] { emit viewChosen(); });
 
-    // The end of a drag in the Camera view moves the scene's camera.
     vtkNew<vtkCallbackCommand> on_end;
     on_end->SetClientData(this);
-    on_end->SetCallback([](vtkObject*, unsigned long, void* self, void*) { static_cast<ViewPanel*>(self)->report_camera(); });
+    on_end->SetCallback(
+        [](vtkObject*, unsigned long, void* self, void*) { static_cast<ViewPanel*>(self)->interaction_ended(); });
     window_->GetInteractor()->AddObserver(vtkCommand::EndInteractionEvent, on_end);
 }
 
 ViewKind ViewPanel::view() const { return static_cast<ViewKind>(chooser_->currentData().toInt()); }
 
-void ViewPanel::set_view(ViewKind view) { chooser_->setCurrentIndex(chooser_->findData(static_cast<int>(view))); }
+void ViewPanel::set_view(ViewKind view) {
+    chooser_->setCurrentIndex(chooser_->findData(static_cast<int>(view)));
+    forget_camera();
+}
+
+SpacePreset ViewPanel::preset() const { return static_cast<SpacePreset>(preset_->currentData().toInt()); }
+
+void ViewPanel::set_preset(SpacePreset preset) {
+    preset_->setCurrentIndex(preset_->findData(static_cast<int>(preset)));
+    forget_camera();
+}
+
+void ViewPanel::forget_camera() { kept_camera_.reset(); }
+
+QSize ViewPanel::drawing_size() const { return widget_->size(); }
+
+void ViewPanel::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    emit resized();
+}
+
+// Each view shows the choosers it reads, however it was chosen.
+void ViewPanel::show_choosers_for_view() {
+    aliasing_->setVisible(view() == ViewKind::error);
+    preset_->setVisible(is_space_view(view()));
+    scene_in_ppls_->setVisible(view() == ViewKind::ppls);
+}
 
 ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& options) {
     window_->GetRenderers()->RemoveAllItems();
@@ -79,7 +134,13 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
     sized.height = std::max(36, static_cast<int>(sized.width / inspection.scene.camera.aspect));
     sized.aliasing = static_cast<AliasingShown>(aliasing_->currentData().toInt());
+    sized.preset = preset();
+    sized.scene_in_ppls = scene_in_ppls_->isChecked();
     const ViewReport report = build_view(renderer, inspection, view(), sized);
+    if (kept_camera_ && is_space_view(view())) {
+        kept_camera_->apply_to(renderer->GetActiveCamera());
+        renderer->ResetCameraClippingRange();
+    }
     const bool image = view() == ViewKind::shadow_map || view() == ViewKind::error || view() == ViewKind::stencil;
     if (image)
         window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleImage>());
@@ -124,10 +185,16 @@ void ViewPanel::add_world_handles(const Inspection& in) {
     }
 }
 
-void ViewPanel::report_camera() {
-    if (view() != ViewKind::camera) return;
+// The end of a drag: in the Camera view it moves the scene's camera; in a space view the panel
+// keeps the camera where the user left it.
+void ViewPanel::interaction_ended() {
     if (!scene_renderer_) return;
     vtkCamera* c = scene_renderer_->GetActiveCamera();
+    if (is_space_view(view())) {
+        kept_camera_ = CameraPose::of(c);
+        return;
+    }
+    if (view() != ViewKind::camera) return;
     const double* p = c->GetPosition();
     const double* f = c->GetFocalPoint();
     const double* u = c->GetViewUp();
@@ -135,9 +202,9 @@ void ViewPanel::report_camera() {
                      {u[0], u[1], u[2]});
 }
 
-// The Camera view keeps the scene camera's aspect (the matrices the window computes are the CLI's):
-// before each render its renderer takes the largest box of that shape in the panel, centred, over
-// a dark backdrop on the layer below.
+// The Camera view keeps the aspect the inspection computed with (the scene's, locked: the matrices
+// are the CLI's; or the panel's, unlocked): before each render its renderer takes the largest box
+// of that shape in the panel, centred, over a dark backdrop on the layer below.
 void ViewPanel::letterbox(vtkRenderer* renderer, const Camera& camera) {
     vtkNew<vtkRenderer> backdrop;
     backdrop->SetBackground(0.12, 0.13, 0.16);

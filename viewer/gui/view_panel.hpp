@@ -1,14 +1,18 @@
 #pragma once
 // One view of the window: a chooser for which view it shows (and, for the Error view, which
-// aliasing its heat map paints), over a VTK widget drawing it.
+// aliasing its heat map paints; for World, Light space and PPLS, how the camera looks at it; for
+// PPLS, whether the scene is drawn), over a VTK widget drawing it. An orbit the user leaves in
+// World, Light space or PPLS is kept across redraws until the view or its preset changes.
 #include <optional>
 #include <vector>
 #include <QWidget>
 #include <vtkSmartPointer.h>
 
+#include "gui/camera_pose.hpp"
 #include "render/rgb_image.hpp"
 #include "views/view.hpp"
 
+class QCheckBox;
 class QComboBox;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
@@ -24,6 +28,10 @@ public:
 
     ViewKind view() const;
     void set_view(ViewKind view);
+    SpacePreset preset() const;
+    void set_preset(SpacePreset preset);
+    void forget_camera();  // the next redraw places the view's default camera (a new scene)
+    QSize drawing_size() const;  // the VTK widget's, without the choosers
     // Redraws from the inspection; returns what the view could not draw.
     ViewReport show(const Inspection& inspection, const ViewOptions& options);
     RgbImage grab();  // what the panel shows now
@@ -36,15 +44,23 @@ signals:
     // or the camera's (its new position; the target stays).
     void lightHandleMoved(const glm::dvec3& point);
     void cameraHandleMoved(const glm::dvec3& position);
+    void resized();  // the Camera view's aspect may follow the panel's shape
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
-    void report_camera();
+    void show_choosers_for_view();
+    void interaction_ended();
     void add_world_handles(const Inspection& inspection);
     void letterbox(vtkRenderer* renderer, const Camera& camera);
 
     std::vector<vtkSmartPointer<vtkHandleWidget>> handles_;
     QComboBox* chooser_;
     QComboBox* aliasing_;  // the Error view's heat map: m or one of its factors
+    QComboBox* preset_;    // World, Light space, PPLS: orbit, from the light, side
+    QCheckBox* scene_in_ppls_;
+    std::optional<CameraPose> kept_camera_;  // the user's, in a space view
     QVTKOpenGLNativeWidget* widget_;
     vtkGenericOpenGLRenderWindow* window_;
     vtkRenderer* scene_renderer_ = nullptr;  // the view's own, the first of the window's renderers
