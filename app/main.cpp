@@ -9,6 +9,7 @@
 #include "bench_command.hpp"
 #include "gui/inspector_app.hpp"
 #include "inspect_command.hpp"
+#include "lesson_command.hpp"
 #include "measure_command.hpp"
 #include "registry/method.hpp"
 #include "render_command.hpp"
@@ -101,8 +102,27 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--aliasing", render.aliasing,
                            "the Error view's heat map: total (m) | perspective | projection (its factors)")
         ->capture_default_str();
+    render_cmd->add_option("--light", render.light,
+                           "the light's direction AZ,EL in degrees: azimuth about +y from +x toward +z, elevation "
+                           "above the ground (default: the scene's)");
+    render_cmd->add_option("--preset", render.preset, "World, Light space and PPLS views: orbit | light | side")
+        ->capture_default_str();
+    render_cmd->add_flag("--no-scene-in-ppls{false}", render.scene_in_ppls, "PPLS view: leave the scene's triangles out");
     render_cmd->add_option("--set", render_pairs, "a method setting, key=value (repeatable)");
     render_cmd->add_option("--out,-o", render.out, "PNG file to write")->required();
+
+    shadowlab::LessonOptions lesson;
+    std::vector<std::string> lesson_pairs;
+    std::string lesson_size = "640x400";
+    CLI::App* lesson_cmd = app.add_subcommand(
+        "lesson", "a course page: every step's formula, values and pictures as HTML and PNGs (needs X: xvfb-run)");
+    lesson_cmd->add_option("scene", lesson.scene_file, "scene file (JSON)")->required();
+    lesson_cmd->add_option("--method,-m", lesson.method, method_help)->capture_default_str();
+    lesson_cmd->add_option("--set", lesson_pairs, "a method setting, key=value (repeatable)");
+    lesson_cmd->add_option("--resolution,-r", lesson.resolution, "shadow map resolution")->capture_default_str();
+    lesson_cmd->add_option("--size", lesson_size, "size of each picture WxH")->capture_default_str();
+    lesson_cmd->add_flag("--row-vectors", lesson.row_vectors, "matrices as the papers print them (row vectors)");
+    lesson_cmd->add_option("--out,-o", lesson.out, "directory to write index.html and its pictures to")->required();
 
     shadowlab::InspectorOptions gui;
     gui.scene_file = default_scene();
@@ -123,6 +143,13 @@ int main(int argc, char** argv) {
             render.settings = parse_settings(render_pairs);
             parse_size(render_size, render.width, render.height);
             shadowlab::run_render(render);
+            return 0;
+        }
+        if (app.got_subcommand(lesson_cmd)) {
+            lesson.settings = parse_settings(lesson_pairs);
+            parse_size(lesson_size, lesson.width, lesson.height);
+            const int pictures = shadowlab::run_lesson(lesson);
+            std::cerr << "lesson: " << lesson.out << "/index.html and " << pictures << " pictures\n";
             return 0;
         }
         if (app.got_subcommand(sweep_cmd)) {

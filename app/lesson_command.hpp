@@ -1,0 +1,27 @@
+#pragma once
+// `shadowlab lesson SCENE --method M [--set k=v]... [--resolution N] [--size WxH] [--row-vectors] --out DIR`
+// A course page: DIR/index.html and its pictures. For each step of the method, its number and title,
+// the formula it applies, its values (matrices as 4 x 4 tables) and the views that show it, drawn
+// by the same code as the window: the World view for steps in the world, Light space and PPLS from
+// the light and from the side, both sides of the warp at the step that applies it, and for the last
+// step the Camera, Shadow map and Error views.
+#include <map>
+#include <string>
+
+namespace shadowlab {
+
+struct LessonOptions {
+    std::string scene_file;
+    std::string method = "lispsm";
+    std::map<std::string, std::string> settings;
+    int resolution = 1024;
+    int width = 640, height = 400;  // each picture
+    bool row_vectors = false;       // matrices as the papers print them (the transpose of ours)
+    std::string out;                // the directory; created if missing
+};
+
+// Writes the page and its pictures (needs X: xvfb-run); returns the number of pictures. Throws on
+// bad input, naming the option or the file.
+int run_lesson(const LessonOptions& options);
+
+}  // namespace shadowlab

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Regenerates every picture README.md shows, with the same code as the window and the CLI:
+# `shadowlab gui --screenshot`, `render`, `lesson`, `bench` and `sweep`. Run from anywhere after a
+# build (scripts/build.sh); it draws under Xvfb when no display is set. Takes about 10 minutes (the
+# bench and the sweep measure against the exact reference); `--views` redraws only the views.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+shadowlab=build/app/shadowlab
+images=docs/images
+[[ -x $shadowlab ]] || { echo "readme_pictures.sh: build first (scripts/build.sh)" >&2; exit 1; }
+x() { if [[ -n ${DISPLAY:-} ]]; then "$@"; else xvfb-run -a -s "-screen 0 1920x1200x24" "$@"; fi; }
+
+# The window at the size the issue judges legibility at.
+x $shadowlab gui data/scenes/default.json --size 1280x800 --screenshot $images/window.png
+
+# The views of LiSPSM on the default scene, one per view.
+for view in camera world light ppls shadowmap error; do
+    x $shadowlab render data/scenes/default.json --method lispsm --view $view --size 800x450 \
+        --out $images/view_$view.png
+done
+
+# The warp made visible: LiSPSM's light space and PPLS from the side, before and after the warp;
+# XPSM's focus region (the paper's Fig. 5) from the light.
+x $shadowlab render data/scenes/box_on_plane.json --method lispsm --view light --preset side --step gamma \
+    --size 640x400 --out $images/lesson_lispsm_gamma.png
+x $shadowlab render data/scenes/box_on_plane.json --method lispsm --view light --preset side --step warp-frustum \
+    --size 640x400 --out $images/lesson_lispsm_before_warp.png
+x $shadowlab render data/scenes/box_on_plane.json --method lispsm --view ppls --preset side --step warp \
+    --size 640x400 --out $images/lesson_lispsm_after_warp.png
+x $shadowlab render data/scenes/box_on_plane.json --method xpsm --view light --preset light --step xpsm-4 \
+    --size 640x400 --out $images/lesson_xpsm_intervals.png
+x $shadowlab render data/scenes/box_on_plane.json --method xpsm --view ppls --preset light --step xpsm-13 \
+    --size 640x400 --out $images/lesson_xpsm_focus_region.png
+
+# Shadows that read: the teaching scene, and the shadow volumes.
+x $shadowlab render data/scenes/teaching.json --method lispsm --view camera --size 800x450 \
+    --out $images/teaching_camera.png
+x $shadowlab render data/scenes/volumes.json --method volumes --view camera --size 640x360 \
+    --out $images/volumes_camera.png
+x $shadowlab render data/scenes/volumes_eye_in_shadow.json --method volumes --set count=zpass --view stencil \
+    --size 640x360 --out $images/volumes_stencil_zpass.png
+
+[[ ${1:-} == --views ]] && exit 0
+
+# The measured trade: error against cost, and error as the light turns parallel to the view.
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+$shadowlab bench data/scenes/default.json --out "$work/bench"
+cp "$work/bench/bench.png" "$work/bench/bench_aliasing.png" $images/
+$shadowlab sweep data/scenes/default.json --out "$work/sweep"
+cp "$work/sweep/sweep_angle.png" $images/
