@@ -23,7 +23,7 @@ done
 # XPSM's focus region (the paper's Fig. 5) from the light.
 x $shadowlab render data/scenes/box_on_plane.json --method lispsm --view light --preset side --step gamma \
     --size 640x400 --out $images/lesson_lispsm_gamma.png
-x $shadowlab render data/scenes/box_on_plane.json --method lispsm --view light --preset side --step warp-frustum \
+x $shadowlab render data/scenes/box_on_plane.json --method lispsm --view light --preset side --step light-space \
     --size 640x400 --out $images/lesson_lispsm_before_warp.png
 x $shadowlab render data/scenes/box_on_plane.json --method lispsm --view ppls --preset side --step warp \
     --size 640x400 --out $images/lesson_lispsm_after_warp.png
