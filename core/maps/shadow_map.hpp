@@ -49,6 +49,9 @@ struct MapSelection {
     glm::dvec3 eye{0.0};                 // view_depth: depth = (p - eye) . view_axis
     glm::dvec3 view_axis{0.0, 0.0, -1.0};
     std::vector<double> split_depths;    // view_depth: maps.size() + 1 increasing depths
+    // view_depth: the share of each split, at its far end, over which map i crossfades into map i + 1
+    // (0: a hard seam; at most 0.5).
+    double blend_band = 0.0;
     glm::dvec3 centre{0.0};              // cube_face: the light's position
 };
 const char* to_string(MapSelection::Rule rule);
