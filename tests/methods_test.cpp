@@ -88,7 +88,7 @@ TEST_P(MethodOnScene, TraceIsRecordedOnlyWhenAskedAndMatchesTheUntracedResult) {
     const ShadowSetup traced = run(*find_method(method_name), in, {}, &trace);
     const ShadowSetup plain = run(*find_method(method_name), in);
     EXPECT_GE(trace.steps().size(), 3u);
-    ASSERT_NE(trace.find("output"), nullptr);
+    ASSERT_TRUE(trace.find("output") || trace.find("output-0")) << "one output step, or one per map";
     ASSERT_EQ(traced.maps.size(), plain.maps.size());
     for (size_t i = 0; i < plain.maps.size(); ++i) EXPECT_EQ(traced.maps[i].world_to_uvz, plain.maps[i].world_to_uvz);
 }

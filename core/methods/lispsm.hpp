@@ -1,5 +1,9 @@
 #pragma once
+#include <vector>
+
+#include "geometry/aabb.hpp"
 #include "methods/map_method.hpp"
+#include "methods/warp_common.hpp"
 
 namespace shadowlab {
 
@@ -12,5 +16,33 @@ std::vector<SettingSpec> lispsm_settings();
 // light, with Lloyd's η: the warp's far/near ratio is (z_f / z_n)^((1 + η) / 2), so η = -1 gives
 // no warp (n = ∞), η = 0 LiSPSM's n_opt = (z_n + sqrt(z_n z_f)) / sin γ, η = 1 PSM's n = z_n / sin γ.
 double lispsm_n(double z_n, double z_f, double sin_gamma, double eta);
+
+// What LiSPSM warps: a body (world points) seen by an eye whose view range starts at z_n, under a
+// directional light. `n` overrides n_opt when positive.
+struct LispsmRequest {
+    const std::vector<glm::dvec3>* ws_body;
+    glm::dvec3 eye, view_direction, light_direction;
+    double z_n = 0.0, eta = 0.0, n = 0.0;
+};
+
+// LiSPSM's construction for one body, each quantity its steps show; `warps` is false when the warp
+// has faded to nothing (then only the light space, γ and n are set). Cascades warp each split with it.
+struct LispsmWarp {
+    glm::dmat4 light_from_world{1.0};
+    std::vector<glm::dvec3> ls_body;
+    Aabb ls_body_box;
+    double sin_gamma = 0.0, z_f = 0.0, n = 0.0, depth = 0.0;
+    glm::dvec3 ls_eye{0.0}, ls_near_face{0.0}, ls_centre{0.0};
+    bool warps = false;
+    glm::dmat4 ppls_from_light{1.0}, uvz_from_ppls{1.0};
+    ProjectedPoints ppls_body;
+    Aabb ppls_box;
+    ShadowMap map;  // uvz_from_ppls * ppls_from_light * light_from_world
+};
+LispsmWarp lispsm_warp(const LispsmRequest& request);
+
+// The warp frustum P (the warped body's box taken back into light space, looking along +y from C),
+// drawn with its centre, near and far distances.
+void draw_warp_frustum(Step& step, const LispsmWarp& warp);
 
 }  // namespace shadowlab

@@ -2,6 +2,7 @@
 // docs/ARCHITECTURE.md, "Adding a method").
 #include <stdexcept>
 
+#include "methods/cascades.hpp"
 #include "methods/focused.hpp"
 #include "methods/lispsm.hpp"
 #include "methods/psm.hpp"
@@ -59,6 +60,12 @@ std::deque<Method>& registry() {
          .lights = kDirectionalOnly,
          .covers = Coverage::shadowable_points,
          .compute_maps = compute_xpsm},
+        {.name = "cascades",
+         .title = "Cascaded shadow maps",
+         .description = "Engel; Zhang et al.: the view split by depth, one map per split in an atlas",
+         .settings = cascades_settings(),
+         .lights = kDirectionalOnly,
+         .compute_maps = compute_cascades},
         {.name = "volumes",
          .title = "Stencil shadow volumes",
          .description = "Crow, Heidmann, Everitt and Kilgard: silhouette edges extruded to infinity, faces counted "

@@ -8,6 +8,7 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QVBoxLayout>
@@ -23,8 +24,10 @@ QSlider* slider(int min, int max, QWidget* parent) {
     return s;
 }
 
-// A setting's editor: a spin box over its range, or a combo box over its choices.
+// A setting's editor: a spin box over its range, a combo box over its choices, or a line of
+// comma-separated numbers for a list.
 QWidget* setting_editor(const SettingSpec& spec, QWidget* parent) {
+    if (spec.is_list) return new QLineEdit(QString::fromStdString(spec.default_value), parent);
     if (spec.is_choice()) {
         auto* box = new QComboBox(parent);
         for (const std::string& choice : spec.choices) box->addItem(QString::fromStdString(choice));
@@ -133,6 +136,8 @@ void ControlsPanel::rebuild_settings() {
         editor->setToolTip(QString::fromStdString(spec.description));
         if (auto* box = qobject_cast<QComboBox*>(editor))
             connect(box, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::changed);
+        else if (auto* line = qobject_cast<QLineEdit*>(editor))
+            connect(line, &QLineEdit::editingFinished, this, &ControlsPanel::changed);
         else
             connect(static_cast<QDoubleSpinBox*>(editor), &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
         settings_form_->addRow(QString::fromStdString(spec.name), editor);
@@ -150,6 +155,8 @@ InspectionRequest ControlsPanel::request() const {
         const std::string key = editor->objectName().toStdString();
         if (auto* box = qobject_cast<QComboBox*>(editor))
             r.settings[key] = box->currentText().toStdString();
+        else if (auto* line = qobject_cast<QLineEdit*>(editor))
+            r.settings[key] = line->text().toStdString();
         else
             r.settings[key] = QString::number(static_cast<QDoubleSpinBox*>(editor)->value(), 'g', 12).toStdString();
     }

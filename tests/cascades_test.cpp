@@ -1,0 +1,230 @@
+// Cascaded shadow maps: PSSM's split formula in closed form, the atlas, the stabilization's promises
+// (whole-texel moves under translation, a fixed texel size under rotation), every visible receiver in
+// its cascade's tile, and bad settings refused by name.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "math/matrix.hpp"
+#include "methods/cascade_atlas.hpp"
+#include "methods/cascade_splits.hpp"
+#include "methods/cascades.hpp"
+#include "scene/scene_loader.hpp"
+#include "test_support.hpp"
+
+using namespace shadowlab;
+using namespace shadowlab::testing;
+
+namespace {
+
+ShadowSetup cascades(const ShadowInputs& in, const std::map<std::string, std::string>& set = {}) {
+    return compute_cascades(in, resolve_settings("cascades", cascades_settings(), set), nullptr);
+}
+
+ShadowInputs default_inputs() { return gather_inputs(load_scene(source_path("data/scenes/default.json"))); }
+
+// The same scene seen from a camera moved by `offset`, or turned to look along `direction`.
+ShadowInputs moved(const Scene& scene, const glm::dvec3& offset) {
+    Scene s = scene;
+    s.camera.position += offset;
+    s.camera.target += offset;
+    return gather_inputs(s);
+}
+
+ShadowInputs turned(const Scene& scene, const glm::dvec3& direction) {
+    Scene s = scene;
+    s.camera.target = s.camera.position + direction;
+    return gather_inputs(s);
+}
+
+// How many of a map's tile texels a world point lies from the tile's texel grid, per axis.
+glm::dvec2 texel_offset(const ShadowMap& map, const glm::dvec3& world, int texture_resolution) {
+    const glm::dvec2 texels = glm::dvec2(world_to_uvz(map, world)) * tile_resolution(map, texture_resolution);
+    return glm::abs(texels - glm::round(texels));
+}
+
+}  // namespace
+
+TEST(CascadeSplits, PracticalSchemeMatchesPssmsClosedForm) {
+    const std::vector<double> half = practical_splits(1.0, 1000.0, 4, 0.5);
+    ASSERT_EQ(half.size(), 5u);
+    EXPECT_EQ(half.front(), 1.0);
+    EXPECT_EQ(half.back(), 1000.0);
+    EXPECT_NEAR(half[1], 128.19, 0.005);
+    EXPECT_NEAR(half[2], 266.06, 0.005);
+    EXPECT_NEAR(half[3], 464.04, 0.005);
+    // λ = 1: every split the same ratio, 1000^(1/4) = 5.623.
+    const std::vector<double> logarithmic = practical_splits(1.0, 1000.0, 4, 1.0);
+    EXPECT_NEAR(logarithmic[1], 5.623, 0.0005);
+    EXPECT_NEAR(logarithmic[2], 31.62, 0.005);
+    EXPECT_NEAR(logarithmic[3], 177.8, 0.05);
+    // λ = 0: uniform steps of 999 / 4.
+    const std::vector<double> uniform = practical_splits(1.0, 1000.0, 4, 0.0);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(uniform[i + 1] - uniform[i], 249.75, 1e-9);
+}
+
+TEST(CascadeSplits, ManualFractionsOfTheDepthRange) {
+    EXPECT_EQ(manual_splits(1.0, 101.0, {0.05, 0.2, 0.5}), (std::vector<double>{1.0, 6.0, 21.0, 51.0, 101.0}));
+}
+
+TEST(CascadeAtlas, TwoByTwoTileMatrixScalesByAQuarterAndTilesSitOnWholeTexelsApart) {
+    for (int tile = 0; tile < 4; ++tile) {
+        const AtlasTile t = atlas_tile(tile, 4);
+        const glm::dmat4 m = atlas_tile_matrix(t);
+        EXPECT_EQ(m[0][0], 0.25);
+        EXPECT_EQ(m[1][1], -0.25);
+        EXPECT_EQ(m[3][0], 0.25 + 0.5 * (tile % 2));
+        EXPECT_EQ(m[3][1], 0.25 + 0.5 * (tile / 2));
+    }
+    for (int count = 1; count <= kMaxCascades; ++count)
+        for (int i = 0; i < count; ++i) {
+            const glm::dvec4 a = tile_viewport(atlas_tile(i, count));
+            EXPECT_TRUE(a.x >= 0 && a.y >= 0 && a.z <= 1 && a.w <= 1 && a.z - a.x == a.w - a.y) << count << " " << i;
+            const glm::dvec4 texels = a * 512.0;
+            EXPECT_EQ(texels, glm::round(texels)) << "tile edges on texel boundaries";
+            for (int j = 0; j < i; ++j) {
+                const glm::dvec4 b = tile_viewport(atlas_tile(j, count));
+                EXPECT_TRUE(a.x >= b.z || b.x >= a.z || a.y >= b.w || b.y >= a.w) << count << ": tiles " << i << ", " << j;
+            }
+        }
+}
+
+// The map reads the texel grid through the light space's origin: after any camera translation the
+// world origin still lies on a texel corner of every cascade's tile (so the whole map moved by whole texels).
+TEST(Cascades, StabilizedMapsPutTheWorldOriginOnAWholeTexelForAnyTranslation) {
+    const Scene scene = load_scene(source_path("data/scenes/default.json"));
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> offset(-30.0, 30.0);
+    for (const char* fit : {"cascade", "scene", "sphere"})
+        for (int k = 0; k < 20; ++k) {
+            const ShadowInputs in = moved(scene, {offset(rng), 0.1 * offset(rng), offset(rng)});
+            const ShadowSetup setup = cascades(in, {{"stabilize", "on"}, {"fit", fit}});
+            ASSERT_EQ(setup.maps.size(), 4u);
+            for (const ShadowMap& map : setup.maps)
+                for (int resolution : {512, 2048, 8192}) {
+                    const glm::dvec2 off = texel_offset(map, glm::dvec3(0.0), resolution);
+                    EXPECT_LT(std::max(off.x, off.y), 1e-6) << fit << " at " << resolution;
+                }
+        }
+}
+
+// The sphere's size depends on the slice alone: the texel size (u per world unit) stays the same
+// however the camera turns.
+TEST(Cascades, SphereFitKeepsTheTexelSizeUnderAnyRotation) {
+    const Scene scene = load_scene(source_path("data/scenes/default.json"));
+    const auto u_per_world = [](const ShadowMap& map) { return glm::length(glm::dvec3(row(map.world_to_uvz, 0))); };
+    const ShadowSetup first = cascades(gather_inputs(scene), {{"stabilize", "on"}, {"fit", "sphere"}});
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> azimuth(0.0, 6.283), elevation(-1.2, 0.3);
+    for (int k = 0; k < 30; ++k) {
+        const double a = azimuth(rng), e = elevation(rng);
+        const ShadowInputs in = turned(scene, {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)});
+        const ShadowSetup setup = cascades(in, {{"stabilize", "on"}, {"fit", "sphere"}});
+        for (size_t i = 0; i < setup.maps.size(); ++i) {
+            EXPECT_EQ(u_per_world(setup.maps[i]), u_per_world(first.maps[i])) << "cascade " << i;
+            EXPECT_EQ(glm::length(glm::dvec3(row(setup.maps[i].world_to_uvz, 1))),
+                      glm::length(glm::dvec3(row(first.maps[i].world_to_uvz, 1))));
+        }
+    }
+}
+
+// Every receiver corner the camera sees reads its own cascade's map (by view depth: the split that
+// holds its depth) and lands in [0,1]^3 there, so in that map's tile; in the blend band also in the
+// next map, which it crossfades into.
+TEST(Cascades, EveryVisibleReceiverPointMapsIntoItsCascadesTile) {
+    const std::vector<std::map<std::string, std::string>> variants{
+        {},
+        {{"count", "1"}},
+        {{"count", "8"}, {"lambda", "1"}},
+        {{"scheme", "manual"}, {"splits", "0.1,0.3,0.6"}},
+        {{"fit", "scene"}},
+        {{"fit", "sphere"}, {"stabilize", "on"}},
+        {{"stabilize", "on"}},
+        {{"warp", "lispsm"}},
+        {{"blend", "0.3"}, {"count", "3"}},
+        {{"select", "tile"}, {"fit", "sphere"}},
+    };
+    for (const std::string& file : shipped_scenes()) {
+        const ShadowInputs in = gather_inputs(load_scene(file));
+        if (!in.light.is_directional()) continue;
+        const double tol = 1e-7 * in.scene_bounds.diagonal();
+        for (const auto& set : variants) {
+            const ShadowSetup setup = cascades(in, set);
+            const MapSelection& selection = setup.selection;
+            for (const glm::dvec3& p : in.receiver_points()) {
+                if (!in.frustum.contains(p, -tol)) continue;
+                const int i = select_map(setup, p);
+                ASSERT_GE(i, 0) << file;
+                ASSERT_TRUE(in_unit_cube(world_to_uvz(setup.maps[i], p), 1e-6)) << file << " map " << i;
+                if (selection.rule != MapSelection::Rule::view_depth) continue;
+                const double depth = glm::dot(p - selection.eye, selection.view_axis);
+                EXPECT_GE(depth, selection.split_depths[i]);
+                EXPECT_LE(depth, selection.split_depths[i + 1]);
+                const double band = selection.blend_band * (selection.split_depths[i + 1] - selection.split_depths[i]);
+                if (i + 1 < int(setup.maps.size()) && depth >= selection.split_depths[i + 1] - band)
+                    EXPECT_TRUE(in_unit_cube(world_to_uvz(setup.maps[i + 1], p), 1e-6)) << file << " blend into " << i + 1;
+            }
+        }
+    }
+}
+
+TEST(Cascades, BadSettingsAreRefusedWithTheirNames) {
+    const ShadowInputs in = default_inputs();
+    const auto refusal = [&](const std::map<std::string, std::string>& set) -> std::string {
+        try {
+            cascades(in, set);
+        } catch (const std::invalid_argument& e) {
+            return e.what();
+        }
+        return "accepted";
+    };
+    const std::vector<std::pair<std::map<std::string, std::string>, std::string>> cases{
+        {{{"lambda", "1.5"}}, "lambda"},
+        {{{"lambda", "-0.1"}}, "lambda"},
+        {{{"count", "9"}}, "count"},
+        {{{"count", "0"}}, "count"},
+        {{{"count", "2.5"}}, "count"},
+        {{{"scheme", "manual"}, {"splits", "0.5,0.2,0.7"}}, "splits"},
+        {{{"scheme", "manual"}, {"splits", "0.2,0.2,0.7"}}, "splits"},
+        {{{"scheme", "manual"}, {"splits", "0.2,0.5"}}, "splits"},
+        {{{"scheme", "manual"}, {"splits", "0.2,x,0.5"}}, "splits"},
+        {{{"far", "0.01"}}, "far"},
+        {{{"blend", "0.6"}}, "blend"},
+        {{{"fit", "tight"}}, "fit"},
+        {{{"warp", "lispsm"}, {"stabilize", "on"}}, "stabilize"},
+        {{{"warp", "lispsm"}, {"select", "tile"}}, "select"},
+    };
+    for (const auto& [set, name] : cases) {
+        const std::string message = refusal(set);
+        EXPECT_NE(message.find("cascades"), std::string::npos) << message;
+        EXPECT_NE(message.find("setting " + name + "="), std::string::npos) << name << ": " << message;
+    }
+}
+
+TEST(Cascades, ASpotLightTakesTheFocusedMapAsANamedFallback) {
+    const ShadowInputs in = gather_inputs(load_scene(source_path("data/scenes/spot.json")));
+    const ShadowSetup setup = cascades(in);
+    ASSERT_FALSE(setup.fallbacks.empty());
+    EXPECT_EQ(setup.fallbacks[0].kind, NoteKind::not_directional);
+    EXPECT_EQ(setup.maps.size(), 1u);
+}
+
+TEST(Cascades, NearerCascadesSpendTheirTexelsOnLessGround) {
+    const ShadowSetup setup = cascades(default_inputs());
+    const auto ground_per_u = [](const ShadowMap& map) { return 1.0 / glm::length(glm::dvec3(row(map.world_to_uvz, 0))); };
+    for (size_t i = 1; i < setup.maps.size(); ++i) EXPECT_LT(ground_per_u(setup.maps[i - 1]), ground_per_u(setup.maps[i]));
+}
+
+// One output step per map (output-0 ...), and the traced maps are the untraced ones.
+TEST(Cascades, TheTraceRecordsEveryMapAndChangesNone) {
+    const ShadowInputs in = default_inputs();
+    Trace trace;
+    const Settings settings = resolve_settings("cascades", cascades_settings(), {{"warp", "lispsm"}});
+    const ShadowSetup traced = compute_cascades(in, settings, &trace), plain = compute_cascades(in, settings, nullptr);
+    ASSERT_EQ(traced.maps.size(), plain.maps.size());
+    for (size_t i = 0; i < plain.maps.size(); ++i) {
+        EXPECT_EQ(traced.maps[i].world_to_uvz, plain.maps[i].world_to_uvz);
+        EXPECT_NE(trace.find("output-" + std::to_string(i)), nullptr);
+        EXPECT_NE(trace.find("cascade-" + std::to_string(i) + "-tile"), nullptr);
+    }
+}
