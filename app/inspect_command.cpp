@@ -48,6 +48,9 @@ std::string describe(const NamedGeometry& g) {
             return std::to_string(s.polygons.size()) + " polygons, " + std::to_string(at_infinity) + " of " +
                    std::to_string(s.vertices.size()) + " vertices at infinity (w = 0)";
         }
+        else if constexpr (std::is_same_v<T, Arrow>) return "arrow" + format_value(s.from, "") + " ->" + format_value(s.to, "");
+        else if constexpr (std::is_same_v<T, AngleArc>) return "angle at" + format_value(s.centre, "");
+        else if constexpr (std::is_same_v<T, Label>) return "label \"" + s.text + "\" at" + format_value(s.at, "");
         else return "frustum (8 corners)";
     }, g.geometry);
 }

@@ -155,7 +155,7 @@ int run_lesson(const LessonOptions& o) {
                 values_table(step, layout) + "\n<div>";
         for (const Picture& p : pictures_of(in, i)) {
             const std::string file = picture_file(i, p);
-            const glm::ivec2 size = p.view == ViewKind::camera ? image_size_within(in.scene.camera, o.width, o.height)
+            const glm::ivec2 size = looks_through_scene_camera(p.view) ? image_size_within(in.scene.camera, o.width, o.height)
                                                                : glm::ivec2(o.width, o.height);
             write_png(render_view(in, p.view, {.step = step.id, .preset = p.preset}, size.x, size.y),
                       (dir / file).string());

@@ -13,6 +13,7 @@
 #include "measure_command.hpp"
 #include "registry/method.hpp"
 #include "render_command.hpp"
+#include "shimmer_command.hpp"
 #include "sweep_command.hpp"
 
 namespace {
@@ -94,7 +95,7 @@ int main(int argc, char** argv) {
     CLI::App* render_cmd = app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
     render_cmd->add_option("scene", render.scene_file, "scene file (JSON)")->required();
     render_cmd->add_option("--method,-m", render.method, method_help)->capture_default_str();
-    render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | error | stencil")->capture_default_str();
+    render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | texels | error | stencil")->capture_default_str();
     render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
     render_cmd->add_option("--size", render_size, "image size WxH")->capture_default_str();
     render_cmd->add_option("--resolution,-r", render.resolution, "shadow map resolution")->capture_default_str();
@@ -106,6 +107,10 @@ int main(int argc, char** argv) {
                            "the light's direction AZ,EL in degrees: azimuth about +y from +x toward +z, elevation "
                            "above the ground (default: the scene's)");
     render_cmd->add_option("--preset", render.preset, "World, Light space and PPLS views: orbit | light | side")
+        ->capture_default_str();
+    render_cmd->add_option("--overlay", render.overlay,
+                           "Camera view of a map method: none | cascade (the map serving each surface) | texels "
+                           "(the serving map's texels per pixel)")
         ->capture_default_str();
     render_cmd->add_flag("--no-scene-in-ppls{false}", render.scene_in_ppls, "PPLS view: leave the scene's triangles out");
     render_cmd->add_option("--set", render_pairs, "a method setting, key=value (repeatable)");
@@ -123,6 +128,26 @@ int main(int argc, char** argv) {
     lesson_cmd->add_option("--size", lesson_size, "size of each picture WxH")->capture_default_str();
     lesson_cmd->add_flag("--row-vectors", lesson.row_vectors, "matrices as the papers print them (row vectors)");
     lesson_cmd->add_option("--out,-o", lesson.out, "directory to write index.html and its pictures to")->required();
+
+    shadowlab::ShimmerOptions shimmer;
+    std::vector<std::string> shimmer_pairs;
+    std::string shimmer_size = "640x360";
+    CLI::App* shimmer_cmd = app.add_subcommand(
+        "shimmer", "the camera moved along a path: how often fixed points' shadow verdicts flip between frames");
+    shimmer_cmd->add_option("scene", shimmer.scene_file, "scene file (JSON)")->required();
+    shimmer_cmd->add_option("--method,-m", shimmer.method, method_help)->capture_default_str();
+    shimmer_cmd->add_option("--set", shimmer_pairs, "a method setting, key=value (repeatable)");
+    shimmer_cmd->add_option("--path", shimmer.path, "translate (sideways) | rotate (on the spot) | dolly (forward)")
+        ->capture_default_str();
+    shimmer_cmd->add_option("--frames", shimmer.frames, "frames along the path")->capture_default_str();
+    shimmer_cmd->add_option("--step", shimmer.step,
+                            "per frame: world units (translate, dolly) or degrees (rotate); 0: automatic "
+                            "(0.5 % of the distance to the target, 0.25°)")
+        ->capture_default_str();
+    shimmer_cmd->add_option("--resolution,-r", shimmer.resolution, "shadow map resolution")->capture_default_str();
+    shimmer_cmd->add_option("--size", shimmer_size, "camera image size WxH (its visible receiver pixels are the points)")
+        ->capture_default_str();
+    shimmer_cmd->add_option("--out", shimmer.out_dir, "output directory")->required();
 
     shadowlab::InspectorOptions gui;
     gui.scene_file = default_scene();
@@ -150,6 +175,12 @@ int main(int argc, char** argv) {
             parse_size(lesson_size, lesson.width, lesson.height);
             const int pictures = shadowlab::run_lesson(lesson);
             std::cerr << "lesson: " << lesson.out << "/index.html and " << pictures << " pictures\n";
+            return 0;
+        }
+        if (app.got_subcommand(shimmer_cmd)) {
+            shimmer.settings = parse_settings(shimmer_pairs);
+            parse_size(shimmer_size, shimmer.width, shimmer.height);
+            shadowlab::run_shimmer(shimmer);
             return 0;
         }
         if (app.got_subcommand(sweep_cmd)) {

@@ -16,6 +16,16 @@ namespace {
 
 Json to_json(const AliasingStats& s) { return {{"max", s.max}, {"mean", s.mean}, {"p95", s.p95}}; }
 
+// Per map: the receiver pixels it serves, the share of them it misclassifies, its perspective m.
+Json to_json(const MapBreakdown& b) {
+    Json maps = Json::array();
+    for (const MapShare& share : b.maps)
+        maps.push_back({{"pixels", share.pixels},
+                        {"misclassified", share.pixels ? double(share.misclassified) / share.pixels : 0.0},
+                        {"m_perspective", to_json(share.m_perspective)}});
+    return maps;
+}
+
 }  // namespace
 
 Json to_json(const Measurement& m) {
@@ -36,6 +46,10 @@ Json to_json(const Measurement& m) {
             {"limits", to_json(m.limits)},
             {"bias", m.geometry ? Json(nullptr) : m.bias >= 0.0 ? Json(m.bias) : Json("slope-scaled")},
             {"receiver_pixels", e.receiver_pixels}};
+    if (m.by_map) {
+        out["per_map"] = to_json(*m.by_map);
+        out["seam_share"] = m.by_map->seam_share();  // of the misclassified pixels, near a boundary between maps
+    }
     if (m.geometry) {
         out["polygons"] = m.geometry->polygons;
         out["fill_mean"] = m.geometry->fill_mean;
@@ -70,6 +84,16 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
                   << "\n    perspective factor (the parameterization's part): " << e.m_perspective
                   << "\n    projection factor (the surface's tilt): " << e.m_projection
                   << "\n  depth step of a 24-bit map (world units): " << e.depth_step << "\n";
+    if (m.by_map) {
+        for (size_t k = 0; k < m.by_map->maps.size(); ++k) {
+            const MapShare& share = m.by_map->maps[k];
+            std::cout << "  map " << k << ": " << share.pixels << " receiver pixels, misclassified "
+                      << (share.pixels ? 100.0 * share.misclassified / share.pixels : 0.0) << "%, m perspective "
+                      << share.m_perspective << "\n";
+        }
+        std::cout << "  seams: " << 100 * m.by_map->seam_share() << "% of the misclassified pixels lie within "
+                  << kSeamPixels << " pixels of a boundary between maps\n";
+    }
     std::cout << "  cost: setup " << m.setup_ms << " ms, raster " << m.raster_ms << " ms, total "
               << m.setup_ms + m.raster_ms << " ms\n";
     if (m.geometry)

@@ -28,6 +28,13 @@ AliasingShown aliasing_or_throw(const std::string& name) {
     throw std::invalid_argument("--aliasing: unknown '" + name + "' (one of total, perspective, projection)");
 }
 
+MapOverlay overlay_or_throw(const std::string& name) {
+    if (name == "none") return MapOverlay::none;
+    if (name == "cascade") return MapOverlay::cascade_index;
+    if (name == "texels") return MapOverlay::texels_per_pixel;
+    throw std::invalid_argument("--overlay: unknown '" + name + "' (one of none, cascade, texels)");
+}
+
 SpacePreset preset_or_throw(const std::string& name) {
     if (const auto preset = space_preset_named(name)) return *preset;
     std::string names;
@@ -66,12 +73,13 @@ void run_render(const RenderOptions& options) {
     const ViewKind view = view_or_throw(options.view);
     const AliasingShown aliasing = aliasing_or_throw(options.aliasing);
     const SpacePreset preset = preset_or_throw(options.preset);
+    const MapOverlay overlay = overlay_or_throw(options.overlay);
     Scene scene = load_scene(options.scene_file);
     turn_light(scene, options.light);
     // The camera keeps its aspect: its image is the largest of that shape within --size; the Camera
     // view is drawn at that size, the other views fill --size (their images are letterboxed).
     const glm::ivec2 camera_image = image_size_within(scene.camera, options.width, options.height);
-    const glm::ivec2 size = view == ViewKind::camera ? camera_image : glm::ivec2(options.width, options.height);
+    const glm::ivec2 size = looks_through_scene_camera(view) ? camera_image : glm::ivec2(options.width, options.height);
     InspectionRequest request;
     request.method = options.method;
     request.settings = options.settings;
@@ -87,6 +95,7 @@ void run_render(const RenderOptions& options) {
     view_options.aliasing = aliasing;
     view_options.preset = preset;
     view_options.scene_in_ppls = options.scene_in_ppls;
+    view_options.overlay = overlay;
     const RgbImage image = render_view(inspection, view, view_options, size.x, size.y);
     write_png(image, options.out);
     std::cerr << "render: " << to_string(view) << " view of " << options.scene_file << " (" << inspection.name();

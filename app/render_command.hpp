@@ -1,7 +1,7 @@
 #pragma once
 // `shadowlab render SCENE --method M [--view V] [--step ID] [--size WxH] [--resolution N] [--bias B]
 //  [--aliasing total|perspective|projection] [--light AZ,EL] [--preset orbit|light|side]
-//  [--no-scene-in-ppls] --out FILE.png`
+//  [--overlay none|cascade|texels] [--no-scene-in-ppls] --out FILE.png`
 #include <map>
 #include <string>
 
@@ -20,6 +20,7 @@ struct RenderOptions {
     std::string light;  // "AZ,EL" in degrees, as the window's Controls panel: the light's new direction; empty: the scene's
     std::string preset = "orbit";  // World, Light space, PPLS: how the camera looks (space_preset_named)
     bool scene_in_ppls = true;     // PPLS: draw the scene's triangles
+    std::string overlay = "none";  // Camera view of a map method: none, cascade (each surface's map) or texels (per pixel)
     std::string out;
 };
 

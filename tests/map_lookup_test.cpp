@@ -2,7 +2,9 @@
 // paraboloid's closed form, and the rasterizer drawing each map into its own tile only.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include "maps/map_lookup.hpp"
 #include "raster/depth_map.hpp"
@@ -167,4 +169,88 @@ TEST(AtlasRaster, ParaboloidHemispheresClipAtTheirPlane) {
         for (int x = n / 2; x < n; ++x) ASSERT_EQ(depth.at(x, y), 1.0f) << "the upper hemisphere sees nothing";
     EXPECT_TRUE(in_shadow(depth, setup, {0.2, -3.0, 0.1}, 0.05));
     EXPECT_FALSE(in_shadow(depth, setup, {0.2, 2.0, 0.1}, 0.05)) << "between the light and the caster";
+}
+
+namespace {
+
+// Two overhead maps of one caster side by side, chosen by view depth along +x: the fine map 0 (h =
+// 2) serves x in [-1.5, 1.5), the coarse map 1 (h = 8) x in [1.5, 10].
+ShadowSetup fine_then_coarse(double blend_band) {
+    ShadowSetup setup{.maps = {overhead({0, 0, 0.5, 0.5}, 2.0), overhead({0.5, 0, 1, 0.5}, 8.0)}};
+    setup.selection = {.rule = MapSelection::Rule::view_depth, .eye = {0, 0, 0}, .view_axis = {1, 0, 0},
+                       .split_depths = {-1.5, 1.5, 10.0}, .blend_band = blend_band};
+    return setup;
+}
+
+// A caster at height 1 over x in [-9, 9], z in [-9, 0.3]: its shadow's edge on the ground runs along
+// x, across the boundary between the maps, at z = 0.3, which falls inside a texel row of either map.
+WorldTriangles half_plane_caster() {
+    WorldTriangles t;
+    t.vertices = {{-9, 1, -9}, {9, 1, -9}, {9, 1, 0.3}, {-9, 1, 0.3}};
+    t.triangles = {{0, 1, 2}, {0, 2, 3}};
+    t.object = {0, 0};
+    return t;
+}
+
+}  // namespace
+
+// The band is the last blend_band of a split: the weight rises linearly from its start to 1 at the
+// split's far end; the last split and the other rules never blend.
+TEST(MapBlend, WeightRisesLinearlyOverTheLastShareOfTheSplit) {
+    const ShadowSetup setup = fine_then_coarse(0.25);  // split 0 is 3 deep: a band of 0.75 from x = 0.75
+    EXPECT_EQ(blend_of(setup, {0.5, 0, 0}).next, -1);
+    EXPECT_EQ(blend_of(setup, {0.75, 0, 0}).next, -1) << "the band's start: weight 0";
+    const MapBlend inside = blend_of(setup, {1.2, 0, 0});
+    EXPECT_EQ(inside.map, 0);
+    EXPECT_EQ(inside.next, 1);
+    EXPECT_NEAR(inside.weight, 0.6, 1e-12);
+    EXPECT_NEAR(blend_of(setup, {1.5 - 1e-9, 0, 0}).weight, 1.0, 1e-8);
+    const MapBlend last = blend_of(setup, {9.9, 0, 0});
+    EXPECT_EQ(last.map, 1);
+    EXPECT_EQ(last.next, -1) << "the last split fades into nothing";
+    EXPECT_EQ(blend_of(fine_then_coarse(0.0), {1.4, 0, 0}).next, -1) << "no band: a hard seam";
+    ShadowSetup tiles = setup;
+    tiles.selection.rule = MapSelection::Rule::tile_bounds;
+    EXPECT_EQ(blend_of(tiles, {1.4, 0, 0}).next, -1);
+}
+
+// In the band the amount is the crossfade of the two maps' verdicts, each with its own bias, and
+// in_shadow thresholds it at one half.
+TEST(MapBlend, AmountCrossfadesTheTwoVerdicts) {
+    const ShadowSetup setup = fine_then_coarse(0.5);  // band from x = 0
+    const DepthMap depth = rasterize_depth(half_plane_caster(), {true}, setup, 64);
+    const MapBias only_map_0_sees_it = [](int map) { return map == 0 ? 0.01 : 2.0; };  // map 1 biased past the caster
+    for (double x : {-0.5, 0.3, 0.75, 1.2}) {
+        const glm::dvec3 p(x, 0, -1);
+        const double w = blend_of(setup, p).weight;
+        EXPECT_NEAR(shadow_amount(depth, setup, p, only_map_0_sees_it), 1.0 - w, 1e-12) << x;
+        EXPECT_EQ(in_shadow(depth, setup, p, only_map_0_sees_it), 1.0 - w >= 0.5) << x;
+        EXPECT_EQ(shadow_amount(depth, setup, p, [](int) { return 0.01; }), 1.0) << "both maps see the caster";
+    }
+}
+
+// The seam: the shadow's edge lies where each map's texel rows put it, so between the two positions
+// the verdict jumps from lit to shadowed where the maps change. With the band it ramps over the band.
+TEST(MapBlend, TheBandRemovesTheSeamStep) {
+    constexpr double step = 0.01;
+    const auto largest_step = [&](double blend_band) {
+        const ShadowSetup setup = fine_then_coarse(blend_band);
+        const DepthMap depth = rasterize_depth(half_plane_caster(), {true}, setup, 64);
+        double largest = 0.0;
+        for (double z = 0.0; z <= 0.6; z += 0.02) {  // lines along x across the boundary, near the shadow's edge
+            double before = shadow_amount(depth, setup, {-1.0, 0, z}, [](int) { return 0.01; });
+            for (double x = -1.0 + step; x <= 3.0; x += step) {
+                const double amount = shadow_amount(depth, setup, {x, 0, z}, [](int) { return 0.01; });
+                largest = std::max(largest, std::abs(amount - before));
+                before = amount;
+            }
+        }
+        return largest;
+    };
+    const double hard = largest_step(0.0), blended = largest_step(0.3);
+    std::cout << "largest change of the shadow amount between samples " << step << " apart: " << hard
+              << " without a band, " << blended << " with a band of 0.3\n";
+    EXPECT_EQ(hard, 1.0) << "the maps put the edge in different places: a seam";
+    // A linear ramp over the band (0.3 of a split 3 deep): step / 0.9 per sample.
+    EXPECT_LE(blended, step / 0.9 * 1.001);
 }

@@ -35,10 +35,17 @@ int first_map(const ShadowSetup& setup, auto&& holds) {
     return -1;
 }
 
+double view_depth(const MapSelection& s, const glm::dvec3& world) { return glm::dot(world - s.eye, s.view_axis); }
+
+// The split depths the rule reads: one more than the maps at most.
+int split_count(const ShadowSetup& setup) {
+    return int(std::min(setup.selection.split_depths.size(), setup.maps.size() + 1));
+}
+
 int by_view_depth(const ShadowSetup& setup, const glm::dvec3& world) {
     const MapSelection& s = setup.selection;
-    const double depth = glm::dot(world - s.eye, s.view_axis);
-    const int splits = int(std::min(s.split_depths.size(), setup.maps.size() + 1));
+    const double depth = view_depth(s, world);
+    const int splits = split_count(setup);
     for (int i = 0; i + 1 < splits; ++i)
         if (depth >= s.split_depths[i] && (depth < s.split_depths[i + 1] || (i + 2 == splits && depth == s.split_depths[i + 1])))
             return i;
@@ -101,6 +108,18 @@ int select_map(const ShadowSetup& setup, const glm::dvec3& world) {
     return -1;
 }
 
+MapBlend blend_of(const ShadowSetup& setup, const glm::dvec3& world) {
+    const int map = select_map(setup, world);
+    const MapSelection& s = setup.selection;
+    const bool has_next = map >= 0 && map + 2 < split_count(setup);
+    if (s.rule != MapSelection::Rule::view_depth || !(s.blend_band > 0.0) || !has_next) return {.map = map};
+    const double far = s.split_depths[map + 1];
+    const double band = s.blend_band * (far - s.split_depths[map]);
+    const double weight = std::clamp((view_depth(s, world) - (far - band)) / band, 0.0, 1.0);
+    if (!(weight > 0.0)) return {.map = map};
+    return {.map = map, .next = map + 1, .weight = weight};
+}
+
 double tile_resolution(const ShadowMap& map, int texture_resolution) {
     // Tiles are square: their width in texels is their height.
     return (map.viewport.z - map.viewport.x) * texture_resolution;
@@ -128,10 +147,14 @@ std::optional<MapPoint> map_point(const ShadowSetup& setup, const glm::dvec3& wo
 }
 
 std::optional<MapLookup> look_up(const ShadowSetup& setup, const glm::dvec3& world, double bias) {
-    const std::optional<MapPoint> at = map_point(setup, world);
-    if (!at || !on_map(at->homogeneous)) return std::nullopt;
-    const glm::dvec4& h = at->homogeneous;
-    return MapLookup{at->map, glm::dvec2(h) / h.w, (h.z - setup.maps[at->map].z_bias_scale * bias) / h.w};
+    return look_up_in(setup, select_map(setup, world), world, bias);
+}
+
+std::optional<MapLookup> look_up_in(const ShadowSetup& setup, int map, const glm::dvec3& world, double bias) {
+    if (map < 0) return std::nullopt;
+    const glm::dvec4 h = map_homogeneous(setup.maps[map], world);
+    if (!on_map(h)) return std::nullopt;
+    return MapLookup{map, glm::dvec2(h) / h.w, (h.z - setup.maps[map].z_bias_scale * bias) / h.w};
 }
 
 glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::dvec3& direction) {

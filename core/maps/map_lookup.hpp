@@ -23,6 +23,17 @@ double hemisphere_side(const ShadowMap& map, const glm::dvec3& world);
 // The index of the map the setup's selection rule gives the point, or -1 when none does (lit).
 int select_map(const ShadowSetup& setup, const glm::dvec3& world);
 
+// The crossfade of a view_depth selection with a blend band: over the last blend_band of its split
+// (the band's width blend_band × (split_depths[i + 1] − split_depths[i])), map i fades into map i + 1,
+// the weight rising linearly from 0 where the band starts to 1 at the split's far end. The last
+// split has no next map and no band; the other rules never blend.
+struct MapBlend {
+    int map = -1;         // select_map's: the point's own map, -1 for none
+    int next = -1;        // the map it fades into, -1 outside a band
+    double weight = 0.0;  // next's share of the verdict, in (0, 1] inside a band
+};
+MapBlend blend_of(const ShadowSetup& setup, const glm::dvec3& world);
+
 // Map texels per side of one map's tile in a texture of `texture_resolution` texels per side.
 double tile_resolution(const ShadowMap& map, int texture_resolution);
 
@@ -49,6 +60,8 @@ struct MapLookup {
 // The point's map, (u, v) and biased depth (bias in world units along the light); nullopt where no
 // map covers it (behind a map's centre, outside its [0,1] square, or no map selected): lit.
 std::optional<MapLookup> look_up(const ShadowSetup& setup, const glm::dvec3& world, double bias);
+// The same under a given map of the setup (a blend's next map); nullopt for map -1.
+std::optional<MapLookup> look_up_in(const ShadowSetup& setup, int map, const glm::dvec3& world, double bias);
 
 // How (u, v) moves per world unit along `direction` at p under one map: exact for linear maps and
 // cube faces (the quotient rule on the matrix rows), a central difference sized by the distance to

@@ -33,6 +33,7 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
     m.raster_ms = watch.ms();
     m.error = measure_shadow_error(c.scene, c.reference, depth, setup, m.bias);
+    if (setup.maps.size() > 1) m.by_map = break_down_by_map(c.reference, m.error, setup);
     return m;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "metrics/map_breakdown.hpp"
 #include "metrics/shadow_error.hpp"
 #include "reference/exact_shadows.hpp"
 #include "registry/method.hpp"
@@ -33,6 +34,7 @@ struct Measurement {
     std::vector<Note> fallbacks;           // maps: the degradations taken
     std::vector<Note> limits;              // geometric techniques: the limits met
     std::optional<GeometryCost> geometry;  // geometric techniques only: polygons drawn, fragments per pixel
+    std::optional<MapBreakdown> by_map;    // setups of several maps only: per map, and the seams
 
     // What the method told the user: a map's fallbacks, a technique's limits.
     const std::vector<Note>& notes() const { return geometry ? limits : fallbacks; }

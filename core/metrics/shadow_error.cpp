@@ -35,15 +35,15 @@ glm::dvec3 along_light(const Light& light, const glm::dvec3& p) {
 
 }  // namespace
 
-double bias_at(const ShadowSetup& setup, int texture_resolution, const Light& light, const glm::dvec3& p,
-               double cos_theta, double bias) {
-    if (bias >= 0.0) return bias;
-    const int which = select_map(setup, p);
-    if (which < 0) return 0.0;
-    const ShadowMap& map = setup.maps[which];
-    const double slope_scaled =
-        slope_scaled_bias(map, tile_resolution(map, texture_resolution), along_light(light, p), p, cos_theta);
-    return std::isfinite(slope_scaled) ? slope_scaled : 0.0;
+MapBias bias_at(const ShadowSetup& setup, int texture_resolution, const Light& light, const glm::dvec3& p,
+                double cos_theta, double bias) {
+    if (bias >= 0.0) return [bias](int) { return bias; };
+    return [&setup, texture_resolution, light_direction = along_light(light, p), p, cos_theta](int which) {
+        const ShadowMap& map = setup.maps[which];
+        const double slope_scaled =
+            slope_scaled_bias(map, tile_resolution(map, texture_resolution), light_direction, p, cos_theta);
+        return std::isfinite(slope_scaled) ? slope_scaled : 0.0;
+    };
 }
 
 namespace {
@@ -152,6 +152,8 @@ void tally(ShadowError& e) {
     e.misclassified = e.false_shadow + e.false_light;
 }
 
+}  // namespace
+
 AliasingStats statistics(std::vector<double> values) {
     AliasingStats s;
     if (values.empty()) return s;
@@ -161,8 +163,6 @@ AliasingStats statistics(std::vector<double> values) {
     s.p95 = values[std::min(values.size() - 1, size_t(0.95 * double(values.size())))];
     return s;
 }
-
-}  // namespace
 
 ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, const DepthMap& depth,
                                  const ShadowSetup& setup, double bias) {

@@ -14,6 +14,7 @@ enum class PixelVerdict : uint8_t { none, agree, false_shadow, false_light };
 struct AliasingStats {
     double max = 0.0, mean = 0.0, p95 = 0.0;
 };
+AliasingStats statistics(std::vector<double> values);  // all zero for none
 
 struct ShadowError {
     size_t receiver_pixels = 0;  // visible pixels of objects that receive shadows, on faces turned to the light
@@ -66,11 +67,12 @@ ShadowError judge_shadows(const Scene& scene, const ReferenceImage& reference, c
 double slope_scaled_bias(const ShadowMap& map, double texels, const glm::dvec3& light_direction,
                          const glm::dvec3& p, double cos_theta);
 
-// The bias judged at p: `bias` when it is >= 0, else the slope-scaled bias of the map the setup
-// picks for p (0 where none does, or where the slope-scaled bias is not finite). The GPU pass
-// applies the same.
-double bias_at(const ShadowSetup& setup, int texture_resolution, const Light& light, const glm::dvec3& p,
-               double cos_theta, double bias);
+// The bias each map of the setup is judged with at p: `bias` when it is >= 0, else that map's own
+// slope-scaled bias (0 where it is not finite): inside a cascades' blend band both maps judge p,
+// each with its own. The GPU pass applies the same. The result refers to `setup`: use it while
+// the setup lives.
+MapBias bias_at(const ShadowSetup& setup, int texture_resolution, const Light& light, const glm::dvec3& p,
+                double cos_theta, double bias);
 
 // m at one pixel from the map coordinates of it and its neighbours one pixel right and down:
 // J = d(u, v)/d(pixel); a texel (1/N wide in u and v) spans 1 / (N σ_min(J)) pixels at most.

@@ -6,6 +6,7 @@
 #include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QLabel>
 #include <QListWidget>
 #include <QProcess>
@@ -27,6 +28,8 @@
 #include "gui/camera_pose.hpp"
 #include "gui/controls_panel.hpp"
 #include "gui/main_window.hpp"
+#include "gui/plot_panel.hpp"
+#include "plot/shimmer_chart.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
 #include "io/inspection_json.hpp"
@@ -45,6 +48,21 @@ double changed_share(const RgbImage& a, const RgbImage& b) {
     for (size_t i = 0; i < a.rgb.size(); i += 3)
         changed += a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2];
     return static_cast<double>(changed) / (a.rgb.size() / 3);
+}
+
+// The share of pixels that differ within the letterboxed picture of `a` (the box of pixels unlike
+// its top-left corner, the backdrop), so that the panel's shape does not weigh in.
+double changed_share_in_picture(const RgbImage& a, const RgbImage& b) {
+    int x0 = a.width, y0 = a.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            if (!std::equal(a.at(x, y), a.at(x, y) + 3, a.at(0, 0)))
+                x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+    if (x1 < 0 || a.width != b.width || a.height != b.height) return changed_share(a, b);
+    size_t changed = 0;
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) changed += !std::equal(a.at(x, y), a.at(x, y) + 3, b.at(x, y));
+    return static_cast<double>(changed) / ((x1 - x0 + 1) * (y1 - y0 + 1));
 }
 
 // An image of the same size filled with its top-left pixel's colour (the background).
@@ -210,7 +228,7 @@ private slots:
         QVERIFY(count);
         count->setCurrentText("zpass");
         QApplication::processEvents();
-        const double differ = changed_share(zfail, camera->grab());
+        const double differ = changed_share_in_picture(zfail, camera->grab());
         QVERIFY2(differ > 0.2, qPrintable(QString("z-pass and z-fail differ at only %1 of the pixels").arg(differ)));
         inside->setChecked(false);
         QApplication::processEvents();
@@ -407,6 +425,42 @@ private slots:
         window_->controls()->findChild<QCheckBox*>("shadowOnly")->setChecked(true);
         QApplication::processEvents();
         QVERIFY2(changed_share(shaded, camera->grab()) > 0.2, "the Camera view did not change to the lit mask");
+    }
+
+    // The Camera panel's overlay chooser colours the pixels by the map they read.
+    void theCameraOverlayTintsThePicture() {
+        ViewPanel* camera = panel_showing(ViewKind::camera);
+        const RgbImage shadows = camera->grab();
+        auto* overlay = camera->findChild<QComboBox*>("overlayChooser");
+        QVERIFY(overlay && overlay->isVisibleTo(camera));
+        overlay->setCurrentIndex(overlay->findData(static_cast<int>(MapOverlay::cascade_index)));
+        emit camera->viewChosen();
+        QApplication::processEvents();
+        QVERIFY2(changed_share(shadows, camera->grab()) > 0.2, "the overlay did not tint the Camera view");
+        QVERIFY(!panel_showing(ViewKind::world)->findChild<QComboBox*>("overlayChooser")->isVisibleTo(panel_showing(ViewKind::world)));
+    }
+
+    // The Plot dock's shimmer is `shadowlab shimmer` with the dock's path and image: the same numbers.
+    void thePlotDocksShimmerIsTheCommands() {
+        window_->plot()->set_kind(PlotPanel::Kind::shimmer);
+        window_->findChild<QDockWidget*>("plotDock")->show();
+        QApplication::processEvents();
+        const std::optional<Shimmer>& shimmer = window_->plot()->last_shimmer();
+        QVERIFY2(shimmer, "the dock measured no shimmer");
+        QVERIFY(shimmer->transitions() > 1000);
+        const InspectionRequest request = window_->controls()->request();
+        const QTemporaryDir out;
+        QProcess cli;
+        cli.start(SHADOWLAB_CLI, {"shimmer", source("data/scenes/box_on_plane.json"), "--method",
+                                  QString::fromStdString(request.method), "--resolution",
+                                  QString::number(request.resolution), "--frames",
+                                  QString::number(PlotPanel::kShimmerFrames), "--size",
+                                  QString("%1x%1").arg(PlotPanel::kImageWidth), "--out", out.path()});
+        QVERIFY(cli.waitForFinished(120000));
+        QCOMPARE(cli.exitCode(), 0);
+        const QString printed = cli.readAllStandardOutput();
+        QVERIFY2(printed.contains(QString::fromStdString(shimmer_summary(*shimmer))),
+                 qPrintable("the window: " + QString::fromStdString(shimmer_summary(*shimmer)) + "; the command: " + printed));
     }
 
     void choosingAStepHighlightsItsGeometry() {

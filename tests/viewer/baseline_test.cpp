@@ -54,7 +54,7 @@ RgbImage draw(const Baseline& b) {
                                                 .resolution = 1024,
                                                 .image_width = camera_image.x,
                                                 .image_height = camera_image.y});
-    const glm::ivec2 size = b.view == ViewKind::camera ? camera_image : glm::ivec2(400, 250);
+    const glm::ivec2 size = looks_through_scene_camera(b.view) ? camera_image : glm::ivec2(400, 250);
     return render_view(in, b.view, b.options, size.x, size.y);
 }
 

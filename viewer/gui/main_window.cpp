@@ -135,6 +135,7 @@ MainWindow::MainWindow(QWidget* parent)
         for (ViewPanel* panel : panels_)                     // Error view would trace its reference again
             if (shows_steps(panel->view())) redraw(panel);
     });
+    connect(plot_, &PlotPanel::kindChosen, this, &MainWindow::recompute);
     connect(plot_dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) recompute();
     });
@@ -248,9 +249,8 @@ void MainWindow::recompute() {
     redraw();
     if (plot_->isVisible() && inspection_->has_map()) {
         try {
-            const BusyNotice busy(statusBar(), "plot: measuring " + QString::fromStdString(request.method) +
-                                                   " at 256² to 2048² against the exact reference");
-            plot_->update_plot(inspection_->scene, inspection_->method->name, request.settings);
+            const BusyNotice busy(statusBar(), plot_->work(request.method));
+            plot_->update_plot(inspection_->scene, inspection_->method->name, request.settings, request.resolution);
         } catch (const std::exception& e) {
             message(QString("plot: ") + e.what(), true);
         }

@@ -35,6 +35,7 @@ public:
     const Inspection* inspection() const { return inspection_ ? &*inspection_ : nullptr; }
     ControlsPanel* controls() const { return controls_; }
     StepPlayer* steps() const { return steps_; }
+    PlotPanel* plot() const { return plot_; }
     const std::vector<ViewPanel*>& panels() const { return panels_; }
     QString last_message() const { return last_message_; }
 

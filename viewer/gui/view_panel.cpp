@@ -43,6 +43,7 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     : QWidget(parent),
       chooser_(new QComboBox(this)),
       aliasing_(new QComboBox(this)),
+      overlay_(new QComboBox(this)),
       preset_(new QComboBox(this)),
       scene_in_ppls_(new QCheckBox("Scene in PPLS", this)),
       widget_(new QVTKOpenGLNativeWidget(this)) {
@@ -54,6 +55,12 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     aliasing_->setObjectName("aliasingChooser");
     aliasing_->setToolTip("Lloyd's m, or its part a parameterization sets (perspective) or the surface's tilt sets "
                           "(projection)");
+    overlay_->addItem("Shadows", static_cast<int>(MapOverlay::none));
+    overlay_->addItem("Map per pixel", static_cast<int>(MapOverlay::cascade_index));
+    overlay_->addItem("Texels per pixel", static_cast<int>(MapOverlay::texels_per_pixel));
+    overlay_->setObjectName("overlayChooser");
+    overlay_->setToolTip("the Camera view's colours: the shadows alone, or over them the map each pixel reads (a "
+                         "cascade's colour) or how many texels fall on a pixel (1/8 to 8)");
     for (SpacePreset p : all_space_presets()) preset_->addItem(preset_title(p), static_cast<int>(p));
     preset_->setObjectName("presetChooser");
     preset_->setToolTip("a free perspective orbit; orthographic along the light (what the map sees); or orthographic "
@@ -75,6 +82,7 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     auto* choosers = new QHBoxLayout;
     choosers->addWidget(chooser_, 1);
     choosers->addWidget(aliasing_);
+    choosers->addWidget(overlay_);
     choosers->addWidget(preset_);
     choosers->addWidget(scene_in_ppls_);
     layout->addLayout(choosers);
@@ -83,7 +91,8 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
         forget_camera();  // another view or preset starts from its own camera
         emit viewChosen();
     });
-    connect(aliasing_, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
+    for (QComboBox* box : {aliasing_, overlay_})
+        connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
     connect(scene_in_ppls_, &QCheckBox::toggled, this, [this] { emit viewChosen(); });
 
     vtkNew<vtkCallbackCommand> on_end;
@@ -119,6 +128,7 @@ void ViewPanel::resizeEvent(QResizeEvent* event) {
 // Each view shows the choosers it reads, however it was chosen.
 void ViewPanel::show_choosers_for_view() {
     aliasing_->setVisible(view() == ViewKind::error);
+    overlay_->setVisible(view() == ViewKind::camera);
     preset_->setVisible(is_space_view(view()));
     scene_in_ppls_->setVisible(view() == ViewKind::ppls);
 }
@@ -129,11 +139,12 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     window_->AddRenderer(renderer);
     scene_renderer_ = renderer;
     camera_origin_ = inspection.scene.camera.position;  // the Camera view draws relative to it
-    if (view() == ViewKind::camera) letterbox(renderer, inspection.scene.camera);
+    if (looks_through_scene_camera(view())) letterbox(renderer, inspection.scene.camera);
     ViewOptions sized = options;
     sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
     sized.height = std::max(36, static_cast<int>(sized.width / inspection.scene.camera.aspect));
     sized.aliasing = static_cast<AliasingShown>(aliasing_->currentData().toInt());
+    sized.overlay = static_cast<MapOverlay>(overlay_->currentData().toInt());
     sized.preset = preset();
     sized.scene_in_ppls = scene_in_ppls_->isChecked();
     const ViewReport report = build_view(renderer, inspection, view(), sized);

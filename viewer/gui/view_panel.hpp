@@ -58,6 +58,7 @@ private:
     std::vector<vtkSmartPointer<vtkHandleWidget>> handles_;
     QComboBox* chooser_;
     QComboBox* aliasing_;  // the Error view's heat map: m or one of its factors
+    QComboBox* overlay_;   // the Camera view: shadows alone, or the map per pixel, or texels per pixel
     QComboBox* preset_;    // World, Light space, PPLS: orbit, from the light, side
     QCheckBox* scene_in_ppls_;
     std::optional<CameraPose> kept_camera_;  // the user's, in a space view

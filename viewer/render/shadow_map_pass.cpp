@@ -108,20 +108,39 @@ bool set_lookup_uniforms(vtkShaderProgram* program, MapArrays& maps, const Shado
                    program->SetUniform3f("shadowSelectionViewAxis", glm::value_ptr(s.view_axis)),
                    program->SetUniform1fv("shadowSelectionSplitDepths", kMaxMaps + 1, split_depths),
                    program->SetUniformi("shadowSelectionSplitCount", static_cast<int>(splits)),
+                   program->SetUniformf("shadowSelectionBlendBand", static_cast<float>(s.blend_band)),
                    program->SetUniform3f("shadowSelectionCentre", glm::value_ptr(s.centre)));
 }
 
+// Stage 2: the overlay, its map palette and its ramp (render/map_overlay.hpp).
+bool set_overlay_uniforms(vtkShaderProgram* program, MapOverlay overlay, const std::vector<glm::vec3>& ramp) {
+    static_assert(kMapPalette.size() == kMaxMaps, "one palette colour per map the pass holds");
+    std::vector<glm::vec3> stops = ramp;
+    stops.resize(ShadowMapPass::kMaxRampStops);
+    return all_set(program->SetUniformi("shadowOverlay", static_cast<int>(overlay)),
+                   program->SetUniform3fv("shadowPalette", kMaxMaps, glm::value_ptr(kMapPalette[0])),
+                   program->SetUniform3fv("shadowRamp", ShadowMapPass::kMaxRampStops, glm::value_ptr(stops[0])),
+                   program->SetUniformi("shadowRampCount", static_cast<int>(ramp.size())));
+}
+
 // The constants the shaders share with C++, written from it so that neither side can drift: the
-// arrays' size and the values of Projection and MapSelection::Rule.
+// arrays' sizes, the values of Projection, MapSelection::Rule and MapOverlay, and the overlay's
+// strength and range.
 std::string glsl_constants() {
     const auto constant = [](const char* name, auto value) {
         return "const int " + std::string(name) + " = " + std::to_string(static_cast<int>(value)) + ";\n";
     };
+    const auto real = [](const char* name, double value) {
+        return "const float " + std::string(name) + " = " + std::to_string(value) + ";\n";
+    };
     using Rule = MapSelection::Rule;
-    return constant("shadowMaxMaps", kMaxMaps) + constant("shadowParaboloid", Projection::paraboloid) +
-           constant("shadowRuleOnly", Rule::only) + constant("shadowRuleViewDepth", Rule::view_depth) +
-           constant("shadowRuleTileBounds", Rule::tile_bounds) + constant("shadowRuleCubeFace", Rule::cube_face) +
-           constant("shadowRuleHemisphere", Rule::hemisphere);
+    return constant("shadowMaxMaps", kMaxMaps) + constant("shadowMaxRampStops", ShadowMapPass::kMaxRampStops) +
+           constant("shadowParaboloid", Projection::paraboloid) + constant("shadowRuleOnly", Rule::only) +
+           constant("shadowRuleViewDepth", Rule::view_depth) + constant("shadowRuleTileBounds", Rule::tile_bounds) +
+           constant("shadowRuleCubeFace", Rule::cube_face) + constant("shadowRuleHemisphere", Rule::hemisphere) +
+           constant("shadowOverlayNone", MapOverlay::none) +
+           constant("shadowOverlayCascadeIndex", MapOverlay::cascade_index) +
+           real("shadowOverlayStrength", kOverlayStrength) + real("shadowTexelsLog2Range", kTexelsLog2Range);
 }
 
 // Both stages: each map's point before the division, map_homogeneous and hemisphere_side
@@ -189,6 +208,7 @@ uniform vec3 shadowSelectionEye;
 uniform vec3 shadowSelectionViewAxis;
 uniform float shadowSelectionSplitDepths[shadowMaxMaps + 1];
 uniform int shadowSelectionSplitCount;
+uniform float shadowSelectionBlendBand;
 uniform vec3 shadowSelectionCentre;
 uniform sampler2D shadowDepth;
 uniform float shadowBias;  // world units along the light; < 0: slope-scaled per fragment
@@ -201,9 +221,10 @@ int shadowMajorAxisFace(vec3 r) {
   int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
   return 2 * axis + (r[axis] < 0.0 ? 1 : 0);
 }
+float shadowViewDepth(vec3 p) { return dot(p - shadowSelectionEye, shadowSelectionViewAxis); }
 // Map i serves view depths in [split i, split i + 1), the last split included.
 int shadowByViewDepth(vec3 p) {
-  float depth = dot(p - shadowSelectionEye, shadowSelectionViewAxis);
+  float depth = shadowViewDepth(p);
   for (int i = 0; i + 1 < shadowSelectionSplitCount; ++i)
     if (depth >= shadowSelectionSplitDepths[i] &&
         (depth < shadowSelectionSplitDepths[i + 1] ||
@@ -225,6 +246,16 @@ int shadowSelectMap(vec3 p) {
   for (int i = 0; i < shadowMapCount; ++i)
     if (shadowHolds(i, p)) return i;
   return -1;
+}
+// blend_of: map i + 1's share at p, rising from 0 to 1 over the last blend band of split i; none
+// after the last split or under the other rules.
+float shadowBlendWeight(int i, vec3 p) {
+  if (shadowSelectionRule != shadowRuleViewDepth || !(shadowSelectionBlendBand > 0.0) ||
+      !(i >= 0 && i + 2 < shadowSelectionSplitCount))
+    return 0.0;
+  float splitEnd = shadowSelectionSplitDepths[i + 1];
+  float band = shadowSelectionBlendBand * (splitEnd - shadowSelectionSplitDepths[i]);
+  return clamp((shadowViewDepth(p) - (splitEnd - band)) / band, 0.0, 1.0);
 }
 // The texel map i's (u, v) reads: the nearest, kept in the map's tile.
 ivec2 shadowTexelOf(int i, vec2 uv) {
@@ -255,27 +286,64 @@ float shadowSlopeScaledBias(int i, vec3 p, vec3 n) {
   float tanTheta = min(10.0, sqrt(max(0.0, 1.0 - c * c)) / max(c, 1e-6));
   return texel * (1.0 + tanTheta);
 }
+// One map's verdict at p (shadow_amount's): 1 shadowed, 0 lit; off the map or behind its centre, lit.
+float shadowOf(int i, vec3 p, vec3 n) {
+  vec4 h = shadowHomogeneous(i, p);
+  if (!shadowOnMap(h)) return 0.0;
+  float bias = shadowBias >= 0.0 ? shadowBias : shadowSlopeScaledBias(i, p, n);
+  float depth = (h.z - shadowMapZBiasScale[i] * bias) / h.w;
+  return depth > texelFetch(shadowDepth, shadowTexelOf(i, h.xy / h.w), 0).r ? 1.0 : 0.0;
+}
 )";
 
-// The lookup, after VTK's lighting: the nearest texel of the selected map's tile against the
-// fragment's depth, biased before the division by w; no map, or off the map or behind its centre,
-// counts as lit. The seen normal comes from derivatives, which are only defined in uniform control
-// flow: taken before the lookup branches. The colour is the shared surface shading's.
+// Stage 2, the overlay: the selected map's palette colour (in a band both, crossfaded by the
+// weight), or its texels per pixel on the ramp: the pixel's footprint in the map's texels as OpenGL
+// sizes it to pick a mip level (the scale factor ρ, §8.14 of the 4.5 core profile): the longer of
+// d(u, v)/dx and d(u, v)/dy across the screen, in the tile's texels.
+constexpr const char* kOverlayDeclarations = R"(
+uniform int shadowOverlay;
+uniform vec3 shadowPalette[shadowMaxMaps];
+uniform vec3 shadowRamp[shadowMaxRampStops];
+uniform int shadowRampCount;
+vec3 shadowRampColour(float t) {
+  float s = clamp(t, 0.0, 1.0) * float(shadowRampCount - 1);
+  int k = min(int(s), shadowRampCount - 2);
+  return mix(shadowRamp[k], shadowRamp[k + 1], s - float(k));
+}
+float shadowTexelsPerPixel(int i, vec3 p, vec3 dpdx, vec3 dpdy) {
+  float texels = (shadowMapViewport[i].z - shadowMapViewport[i].x) * float(shadowResolution);  // tile_resolution
+  return texels * max(length(shadowUvDerivative(i, p, dpdx)), length(shadowUvDerivative(i, p, dpdy)));
+}
+vec4 shadowOverlaid(vec4 colour, int i, float w, vec3 p, vec3 dpdx, vec3 dpdy) {
+  if (shadowOverlay == shadowOverlayNone || i < 0) return colour;
+  vec3 tint;
+  if (shadowOverlay == shadowOverlayCascadeIndex)
+    tint = w > 0.0 ? mix(shadowPalette[i], shadowPalette[i + 1], w) : shadowPalette[i];
+  else  // texels_ramp_position
+    tint = shadowRampColour((shadowTexelsLog2Range - log2(max(shadowTexelsPerPixel(i, p, dpdx, dpdy), 1e-6))) /
+                            (2.0 * shadowTexelsLog2Range));
+  return vec4(mix(colour.rgb, tint, shadowOverlayStrength), colour.a);
+}
+)";
+
+// The lookup, after VTK's lighting: shadow_amount, the selected map's verdict crossfaded with the
+// next map's inside a blend band; no map counts as lit. The shading is linear in `lit`, so that
+// shading with 1 - amount mixes the two maps' shadings by the weight; the lit mask thresholds the
+// amount at one half, as in_shadow does. The seen normal and the position's screen derivatives are
+// only defined in uniform control flow: taken before the lookup branches. The colour is the shared
+// surface shading's, with the overlay over it.
 constexpr const char* kLookup = R"(//VTK::Light::Impl
   {
-    float lit = 1.0;
     vec3 p = surfaceWorldVSOutput.xyz;
     vec3 n = surfaceSeenNormal(p);
+    vec3 dpdx = dFdx(p), dpdy = dFdy(p);
     int i = shadowSelectMap(p);
-    if (i >= 0) {
-      vec4 h = shadowHomogeneous(i, p);
-      if (shadowOnMap(h)) {
-        float bias = shadowBias >= 0.0 ? shadowBias : shadowSlopeScaledBias(i, p, n);
-        float depth = (h.z - shadowMapZBiasScale[i] * bias) / h.w;
-        lit = depth > texelFetch(shadowDepth, shadowTexelOf(i, h.xy / h.w), 0).r ? 0.0 : 1.0;
-      }
-    }
-    gl_FragData[0] = surfaceColour(ambientColor, diffuseColor, opacity, p, n, lit);
+    float w = shadowBlendWeight(i, p);
+    float amount = 0.0;
+    if (i >= 0) amount = w > 0.0 ? mix(shadowOf(i, p, n), shadowOf(i + 1, p, n), w) : shadowOf(i, p, n);
+    float lit = surfaceLitMask == 1 ? (amount >= 0.5 ? 0.0 : 1.0) : 1.0 - amount;
+    vec4 colour = surfaceColour(ambientColor, diffuseColor, opacity, p, n, lit);
+    gl_FragData[0] = shadowOverlaid(colour, i, w, p, dpdx, dpdy);
   }
 )";
 
@@ -314,6 +382,15 @@ void ShadowMapPass::SetShadePass(vtkRenderPass* shade) {
 
 void ShadowMapPass::SetOutput(Output output) {
     output_ = output;
+    Modified();
+}
+
+void ShadowMapPass::SetOverlay(MapOverlay overlay, const std::vector<glm::vec3>& ramp) {
+    if (ramp.size() < 2 || ramp.size() > static_cast<size_t>(kMaxRampStops))
+        throw std::invalid_argument("ShadowMapPass: an overlay ramp of " + std::to_string(ramp.size()) +
+                                    " colours; it takes 2 to " + std::to_string(kMaxRampStops));
+    overlay_ = overlay;
+    ramp_ = ramp;
     Modified();
 }
 
@@ -417,7 +494,7 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
     }
     pass_world_position(vertex);
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec",
-                                 "//VTK::Light::Dec\n" + projection + kLookupDeclarations, false);
+                                 "//VTK::Light::Dec\n" + projection + kLookupDeclarations + kOverlayDeclarations, false);
     declare_surface_shading(fragment);  // before the lookup's declarations, which use it
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", kLookup, false);
     return true;
@@ -440,7 +517,8 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMa
     return all_set(set_projection_uniforms(program, maps), set_lookup_uniforms(program, maps, setup_),
                    program->SetUniformi("shadowDepth", depth_->GetTextureUnit()),
                    program->SetUniformf("shadowBias", bias_), program->SetUniformi("shadowResolution", resolution_),
-                   set_surface_shading_uniforms(program, frame_, output_ == Output::lit_mask));
+                   set_surface_shading_uniforms(program, frame_, output_ == Output::lit_mask),
+                   set_overlay_uniforms(program, output_ == Output::lit_mask ? MapOverlay::none : overlay_, ramp_));
 }
 
 void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {

@@ -10,13 +10,16 @@
 // through `shade` (normally a vtkRenderStepsPass) and looks each fragment up as maps/map_lookup.cpp
 // does: the setup's rule picks the map, the method's z bias is applied before the division by w
 // (XPSM step 18), constant or slope-scaled per fragment exactly as the CPU metrics compute it, and
-// the nearest texel of the map's tile is compared.
+// the nearest texel of the map's tile is compared. Inside a blend band (blend_of) the two maps'
+// verdicts are crossfaded as shadow_amount crossfades them: the shading mixes by the weight, the lit
+// mask thresholds the amount at one half. An overlay (render/map_overlay.hpp) may tint the result.
 #include <vector>
 #include <glm/glm.hpp>
 #include <vtkOpenGLRenderPass.h>
 #include <vtkSmartPointer.h>
 
 #include "maps/shadow_map.hpp"
+#include "render/map_overlay.hpp"
 #include "render/surface_shading.hpp"
 
 class vtkOpaquePass;
@@ -48,6 +51,11 @@ public:
     void SetCasters(const std::vector<vtkProp*>& casters);  // the props drawn into the maps
     void SetShadePass(vtkRenderPass* shade);
     void SetOutput(Output output);
+    // What the shaded output paints over the shading (the lit mask never has an overlay); ramp: the
+    // texels-per-pixel overlay's colours at even steps over its positions 0..1 (texels_ramp_position),
+    // joined linearly, 2 to kMaxRampStops of them. Throws std::invalid_argument for another count.
+    static constexpr int kMaxRampStops = 16;
+    void SetOverlay(MapOverlay overlay, const std::vector<glm::vec3>& ramp);
 
     void Render(const vtkRenderState* s) override;
     void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -74,6 +82,8 @@ private:
     Stage stage_ = Stage::shade;
     vtkTimeStamp stage_time_;
     Output output_ = Output::shaded;
+    MapOverlay overlay_ = MapOverlay::none;
+    std::vector<glm::vec3> ramp_{glm::vec3(0.0f), glm::vec3(1.0f)};
     ShadowSetup setup_;   // no maps until SetSetup: everything lit
     int drawn_map_ = 0;   // stage 1: the map whose tile is being drawn
     float bias_ = -1.0f;

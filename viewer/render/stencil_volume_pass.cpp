@@ -130,6 +130,16 @@ void StencilVolumePass::Render(const vtkRenderState* s) {
             vtkOpenGLState::ScopedglDepthMask depth_mask(gl);
             vtkOpenGLState::ScopedglColorMask colour_mask(gl);
             vtkOpenGLState::ScopedglDepthFunc depth_func(gl);
+            // The renderer's own box of the window (a letterboxed panel's is smaller than the
+            // window): the stencil is cleared, counted and read there only.
+            vtkOpenGLState::ScopedglViewport viewport(gl);
+            vtkOpenGLState::ScopedglScissor scissor_box(gl);
+            vtkOpenGLState::ScopedglEnableDisable scissor(gl, GL_SCISSOR_TEST);
+            int width = 0, height = 0, x = 0, y = 0;
+            s->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+            gl->vtkglViewport(x, y, width, height);
+            gl->vtkglScissor(x, y, width, height);
+            gl->vtkglEnable(GL_SCISSOR_TEST);
             count(s, gl, program);
             shade_shadowed(s, gl);
             gl->vtkglStencilFunc(GL_ALWAYS, 0, ~0u);

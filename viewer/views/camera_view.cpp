@@ -2,6 +2,10 @@
 // (ShadowMapPass), or for a geometric technique by its polygons in the stencil buffer
 // (StencilVolumePass): the shadow volume for `volumes`, and for `planar` the flattened casters
 // drawn onto their plane (Blinn's projection shadows, the stencil keeping overlaps from darkening twice).
+// For a map method an overlay may tint each surface by the map that serves it or by that map's
+// texels per pixel (render/map_overlay.hpp), named in a legend and the caption.
+#include <cstdio>
+
 #include <vtkActor.h>
 #include <vtkProperty.h>
 #include <vtkRenderStepsPass.h>
@@ -9,6 +13,7 @@
 
 #include "render/shadow_map_pass.hpp"
 #include "render/stencil_volume_pass.hpp"
+#include "views/space_parts.hpp"
 #include "views/view_parts.hpp"
 
 namespace shadowlab {
@@ -19,6 +24,17 @@ glm::dvec4 pass_light(const Light& light) {
     return light.is_directional() ? glm::dvec4(light.direction, 0.0) : glm::dvec4(light.position, 1.0);
 }
 
+glm::dvec3 unit_colour(const Rgb& c) { return glm::dvec3(c[0], c[1], c[2]) / 255.0; }
+
+// The texels-per-pixel ramp as the pass joins it: the Error view's heat ramp (view_parts.hpp) at
+// even steps, which are its own stops, so that the GPU's ramp is the same.
+std::vector<glm::vec3> texels_ramp() {
+    constexpr int stops = 5;
+    std::vector<glm::vec3> ramp;
+    for (int k = 0; k < stops; ++k) ramp.push_back(glm::vec3(unit_colour(heat(k / (stops - 1.0)))));
+    return ramp;
+}
+
 void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options, vtkActor* casters,
                       const Light& light) {
     vtkNew<ShadowMapPass> pass;
@@ -27,7 +43,49 @@ void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOpt
     pass->SetCasters({casters});
     pass->SetShadePass(vtkNew<vtkRenderStepsPass>());
     pass->SetOutput(options.lit_mask ? ShadowMapPass::Output::lit_mask : ShadowMapPass::Output::shaded);
+    pass->SetOverlay(options.overlay, texels_ramp());
     renderer->SetPass(pass);
+}
+
+// "cascade 1: view depth 0.5–12.3": each map in its palette colour, with the depths it serves.
+void add_cascade_legend(vtkRenderer* renderer, const ShadowSetup& setup) {
+    const MapSelection& s = setup.selection;
+    std::vector<LegendEntry> entries;
+    for (size_t i = 0; i < setup.maps.size(); ++i) {
+        std::string text = map_name(setup, i);
+        if (s.rule == MapSelection::Rule::view_depth && i + 1 < s.split_depths.size()) {
+            char depths[64];
+            std::snprintf(depths, sizeof depths, ": view depth %.3g–%.3g", s.split_depths[i], s.split_depths[i + 1]);
+            text += depths;
+        }
+        entries.push_back({glm::dvec3(kMapPalette[i]), text});
+    }
+    add_legend(renderer, entries);
+}
+
+void add_texels_legend(vtkRenderer* renderer) {
+    std::vector<LegendEntry> entries;
+    for (const auto& [texels, text] : {std::pair{8.0, "8 texels per pixel"}, {2.0, "2"}, {1.0, "1"}, {0.5, "1/2"},
+                                       {0.125, "1/8 (a texel 8 pixels wide)"}})
+        entries.push_back({unit_colour(heat(texels_ramp_position(texels))), text});
+    add_legend(renderer, entries);
+}
+
+void describe_overlay(vtkRenderer* renderer, const Inspection& in, MapOverlay overlay) {
+    const ShadowSetup& setup = in.setup;
+    if (overlay == MapOverlay::cascade_index) {
+        add_cascade_legend(renderer, setup);
+        char band[80] = "";
+        if (setup.selection.rule == MapSelection::Rule::view_depth && setup.selection.blend_band > 0.0)
+            std::snprintf(band, sizeof band, "; blend band %.2f of each split, colours crossfaded",
+                          setup.selection.blend_band);
+        add_caption(renderer, "Camera — " + in.name() + ": the map serving each surface (" +
+                                  to_string(setup.selection.rule) + ")" + band);
+    } else if (overlay == MapOverlay::texels_per_pixel) {
+        add_texels_legend(renderer);
+        add_caption(renderer, "Camera — " + in.name() + " " + std::to_string(in.resolution) +
+                                  "²: texels per pixel of the serving map (dark: over-sampled, bright: under-sampled)");
+    }
 }
 
 void install_stencil_pass(vtkRenderer* renderer, const GeometryResult& technique, const ViewOptions& options,
@@ -67,9 +125,10 @@ ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const 
     }
     place_scene_camera(renderer, camera);
     renderer->SetBackground(0.62, 0.74, 0.86);
-    if (in.has_map())
+    if (in.has_map()) {
         install_map_pass(renderer, in, options, casters, light);
-    else
+        if (!options.lit_mask) describe_overlay(renderer, in, options.overlay);
+    } else
         install_stencil_pass(renderer, *in.geometry, options, origin, light);
     if (options.lit_mask) renderer->SetBackground(1.0, 0.0, 0.0);  // nothing visible: red, neither lit nor shadowed
     return {};

@@ -1,14 +1,18 @@
 // The Shadow map view: the depth image the method produces (near dark, far light, empty texels
-// white), one screen square per texel, with the camera frustum drawn where the map puts it.
+// white), one screen square per texel, with the camera frustum drawn where the map puts it; a
+// texture of several maps (an atlas of cascades) with each tile's border and its label.
 #include <algorithm>
 #include <cmath>
 
 #include <vtkActor.h>
+#include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkTextProperty.h>
 
+#include "maps/map_lookup.hpp"
 #include "views/view_parts.hpp"
 
 namespace shadowlab {
@@ -69,7 +73,32 @@ glm::dmat4 pixels_from_world(const ShadowMap& map, int n) {
     return pixels_from_uvz * map.world_to_uvz;
 }
 
+// Each tile's border, its edges through the texel edges the viewport names, and a label inside its
+// top-left corner: "cascade 2: 1024²" for maps chosen by view depth, "map 2: 1024²" otherwise.
+void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
+    for (size_t i = 0; i < setup.maps.size(); ++i) {
+        const Aabb tile = tile_in_pixels(setup.maps[i], n);
+        const glm::dvec3 a(tile.min.x, tile.min.y, 0.6), b(tile.max.x, tile.min.y, 0.6), c(tile.max.x, tile.max.y, 0.6),
+            d(tile.min.x, tile.max.y, 0.6);
+        for (const auto& edge : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}}) edges.push_back(edge);
+        const auto side = static_cast<int>(std::lround(tile_resolution(setup.maps[i], n)));
+        const std::string text = map_name(setup, i) + ": " + std::to_string(side) + "²";
+        vtkNew<vtkBillboardTextActor3D> label;
+        label->SetInput(text.c_str());
+        label->SetPosition(d.x, d.y, d.z);
+        label->SetDisplayOffset(6, -22);  // inside the tile, below its top edge
+        style_overlay_text(label->GetTextProperty(), 14, kTileBorder);
+        renderer->AddViewProp(label);
+    }
+    auto borders = actor_for(segments_polydata(edges, glm::dmat4(1.0)), kTileBorder);
+    borders->GetProperty()->SetLineWidth(2.0f);
+    renderer->AddActor(borders);
+}
+
 }  // namespace
+
+const glm::dvec3 kTileBorder{0.2, 0.9, 0.5};
 
 ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
     const int n = in.resolution;
@@ -91,13 +120,15 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
         frustum->GetProperty()->SetLineWidth(2.0f);
         renderer->AddActor(frustum);
     }
+    if (in.setup.maps.size() > 1) draw_tiles(renderer, in.setup, n);
     vtkNew<TexelGridToggle> toggle;
     toggle->grid = actor_for(texel_grid(n), glm::dvec3(0.35, 0.55, 0.85));
     renderer->AddActor(toggle->grid);
     renderer->AddObserver(vtkCommand::StartEvent, toggle);
     const std::string maps = in.setup.maps.size() > 1 ? ", " + std::to_string(in.setup.maps.size()) + " maps in tiles" : "";
     add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.name() + maps +
-                              " (camera frustum in yellow; texel grid when zoomed in)");
+                              " (camera frustum in yellow; " + (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
+                              "texel grid when zoomed in)");
     return report;
 }
 

@@ -27,11 +27,12 @@ struct ViewName {
     const char* title;
 };
 
-constexpr std::array<ViewName, 7> kViews{{{ViewKind::camera, "camera", "Camera"},
+constexpr std::array<ViewName, 8> kViews{{{ViewKind::camera, "camera", "Camera"},
                                           {ViewKind::world, "world", "World"},
                                           {ViewKind::light, "light", "Light space"},
                                           {ViewKind::ppls, "ppls", "PPLS"},
                                           {ViewKind::shadow_map, "shadowmap", "Shadow map"},
+                                          {ViewKind::texels, "texels", "Texels"},
                                           {ViewKind::error, "error", "Error"},
                                           {ViewKind::stencil, "stencil", "Stencil count"}}};
 
@@ -81,6 +82,12 @@ std::optional<SpacePreset> space_preset_named(const std::string& name) {
     return std::nullopt;
 }
 
+std::string map_name(const ShadowSetup& setup, size_t i) {
+    return (setup.selection.rule == MapSelection::Rule::view_depth ? "cascade " : "map ") + std::to_string(i + 1);
+}
+
+bool looks_through_scene_camera(ViewKind view) { return view == ViewKind::camera || view == ViewKind::texels; }
+
 bool shows_steps(ViewKind view) { return view == ViewKind::world || view == ViewKind::light || view == ViewKind::ppls; }
 
 ViewReport build_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options) {
@@ -89,6 +96,7 @@ ViewReport build_view(vtkRenderer* renderer, const Inspection& in, ViewKind view
     switch (view) {
         case ViewKind::camera: return build_camera_view(renderer, in, options);
         case ViewKind::shadow_map: return build_shadow_map_view(renderer, in);
+        case ViewKind::texels: return build_texels_view(renderer, in);
         case ViewKind::error: return build_error_view(renderer, in, options);
         case ViewKind::stencil: return build_stencil_view(renderer, in);
         default: return build_space_view(renderer, in, view, options);

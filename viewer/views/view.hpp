@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "model/inspection.hpp"
+#include "render/map_overlay.hpp"
 
 class vtkRenderer;
 
 namespace shadowlab {
 
-enum class ViewKind { camera, world, light, ppls, shadow_map, error, stencil };
+enum class ViewKind { camera, world, light, ppls, shadow_map, texels, error, stencil };
 
 const char* to_string(ViewKind view);                          // as on the command line: "shadowmap"
 const char* view_title(ViewKind view);                         // as in the window: "Shadow map"
@@ -19,6 +20,8 @@ std::optional<ViewKind> view_named(const std::string& name);  // nullopt for an 
 const std::vector<ViewKind>& all_views();
 // Does the view draw the chosen trace step (World, Light space, PPLS)? The others do not change with it.
 bool shows_steps(ViewKind view);
+// Is the view drawn through the scene's camera (Camera, Texels), so that its picture keeps the camera's aspect?
+bool looks_through_scene_camera(ViewKind view);
 
 // Which aliasing the Error view paints: Lloyd's m, or one of its two factors (ShadowError).
 enum class AliasingShown { total, perspective, projection };
@@ -36,6 +39,7 @@ struct ViewOptions {
     SpacePreset preset = SpacePreset::orbit;  // World, Light space, PPLS: how the camera looks
     bool scene_in_ppls = true;  // PPLS: draw the scene's triangles (clipped to the unit cube and a margin)
     bool lit_mask = false;  // camera view: white where lit, black where shadowed, unlit colours
+    MapOverlay overlay = MapOverlay::none;  // camera view of a map method: each fragment's map or texels per pixel
     int width = 0, height = 0;  // error view: the camera image it measures (0: 640 x 640 / aspect)
     AliasingShown aliasing = AliasingShown::total;  // error view: the heat map's quantity
 };

@@ -1,6 +1,7 @@
 #pragma once
 // One builder per view (views/*_view.cpp), dispatched by build_view.
 #include <array>
+#include <vector>
 #include <glm/glm.hpp>
 #include <vtkSmartPointer.h>
 
@@ -17,8 +18,30 @@ namespace shadowlab {
 ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
 ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options);
 ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in);
+ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in);
 ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
 ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in);
+
+// The Texels view's back-projection (texels_view.cpp). The setup's maps rasterized over every object,
+// receivers too: where each texel lands on the scene's surfaces.
+DepthMap every_surface_depth(const Inspection& in);
+// A texel of a linear map or a cube face carried back to the world point its depth puts it at.
+struct WorldTexel {
+    int map = 0;                        // its index in the setup
+    glm::ivec2 texel{0};                // in the texture
+    glm::dvec3 centre{0.0};             // the texel's centre, on the surface it samples
+    std::array<glm::dvec3, 4> corners;  // its footprint on that surface, around (u, v): the depth's slope to
+                                        // the neighbours carried to the texel's corners (affine over a plane)
+};
+// Every `stride`-th texel in u and v of each tile that holds a surface (neither the clear value 1 nor
+// a surface before the near plane, clamped to 0) where the setup's selection gives its map (a
+// cascade's texels in its own split); paraboloid maps are left out (their texels' edges bend).
+std::vector<WorldTexel> world_texels(const ShadowSetup& setup, const DepthMap& depth, int stride);
+// The least stride at which at most `most` of the texels holding a surface are taken, before the
+// selection: world_texels gives no more.
+int texel_stride(const ShadowSetup& setup, const DepthMap& depth, size_t most);
+// The Shadow map view's tile borders and labels, drawn when the texture holds several maps.
+extern const glm::dvec3 kTileBorder;
 
 // Shared by the builders.
 vtkSmartPointer<vtkActor> actor_for(const Placed& placed, const glm::dvec3& colour);
@@ -28,6 +51,8 @@ void add_caption(vtkRenderer* renderer, const std::string& text);
 // Text over a view: a font with γ, ³ and × where one is installed, `size` points, `colour` on a
 // translucent black backing that keeps it legible over any picture.
 void style_overlay_text(vtkTextProperty* text, int size, const glm::dvec3& colour = glm::dvec3(1.0));
+// How the views name map i (from 0) of a setup: "cascade 2" for maps chosen by view depth, else "map 2".
+std::string map_name(const ShadowSetup& setup, size_t i);
 using Rgb = std::array<unsigned char, 3>;
 Rgb heat(double t);  // an inferno-like ramp over t in [0, 1]
 

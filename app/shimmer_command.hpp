@@ -1,0 +1,26 @@
+#pragma once
+// `shadowlab shimmer SCENE --method M [--set k=v]... [--path translate|rotate|dolly] [--frames N]
+//  [--step S] [--resolution N] [--size WxH] --out DIR`: the camera moved along a path over the
+// static scene; fixed receiver points judged every frame. DIR/shimmer.csv (per frame: points
+// judged, wrong, transitions, flips) and DIR/shimmer.png (the share flipped and the share wrong per
+// frame); the total share of flipped transitions on stdout.
+#include <map>
+#include <string>
+
+namespace shadowlab {
+
+struct ShimmerOptions {
+    std::string scene_file;
+    std::string method = "focused";
+    std::map<std::string, std::string> settings;
+    std::string path = "translate";
+    int frames = 60;
+    double step = 0.0;  // per frame: world units (translate, dolly) or degrees (rotate); 0: automatic
+    int resolution = 1024;
+    int width = 640, height = 360;
+    std::string out_dir;
+};
+
+void run_shimmer(const ShimmerOptions& options);
+
+}  // namespace shadowlab

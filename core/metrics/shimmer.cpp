@@ -1,0 +1,86 @@
+#include "metrics/shimmer.hpp"
+
+#include <stdexcept>
+
+#include "math/parallel_rows.hpp"
+#include "raster/depth_map.hpp"
+
+namespace shadowlab {
+namespace {
+
+// Inside the camera's view volume: within its clip space's -w..w on every axis.
+bool in_view(const glm::dmat4& clip_from_world, const glm::dvec3& p) {
+    const glm::dvec4 c = clip_from_world * glm::dvec4(p, 1.0);
+    return c.w > 0.0 && std::abs(c.x) <= c.w && std::abs(c.y) <= c.w && std::abs(c.z) <= c.w;
+}
+
+constexpr signed char kNotJudged = -1;
+
+// Each sample's verdict under the frame's maps: 1 in shadow, 0 lit, kNotJudged outside the view.
+std::vector<signed char> verdicts(const MeasureContext& c, const std::vector<ShimmerSample>& samples,
+                                  const Camera& camera, const ShadowSetup& setup, const DepthMap& depth,
+                                  int resolution, double bias) {
+    const glm::dmat4 clip_from_world = camera.projection_matrix() * camera.view_matrix();
+    std::vector<signed char> out(samples.size(), kNotJudged);
+    parallel_rows([&](int first, int stride) {
+        for (size_t i = first; i < samples.size(); i += stride) {
+            const ShimmerSample& s = samples[i];
+            if (!in_view(clip_from_world, s.position)) continue;
+            out[i] = in_shadow(depth, setup, s.position, bias_at(setup, resolution, c.scene.light, s.position, s.facing, bias));
+        }
+    });
+    return out;
+}
+
+}  // namespace
+
+std::vector<ShimmerSample> shimmer_samples(const MeasureContext& c) {
+    const ReferenceImage& ref = c.reference;
+    std::vector<ShimmerSample> samples;
+    for (size_t i = 0; i < ref.visible.size(); ++i)
+        if (ref.visible[i] && ref.facing[i] > 0.0f && c.scene.objects[ref.object[i]].receives)
+            samples.push_back({ref.position[i], ref.facing[i], ref.lit[i] != 0});
+    return samples;
+}
+
+size_t Shimmer::flips() const {
+    size_t n = 0;
+    for (const FrameShimmer& f : frames) n += f.flips;
+    return n;
+}
+
+size_t Shimmer::transitions() const {
+    size_t n = 0;
+    for (const FrameShimmer& f : frames) n += f.transitions;
+    return n;
+}
+
+double Shimmer::share() const { return transitions() ? static_cast<double>(flips()) / transitions() : 0.0; }
+
+Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample>& samples, const Method& method,
+                        const Settings& settings, int resolution, double bias, const CameraPath& path) {
+    if (!method.makes_maps())
+        throw std::invalid_argument("shimmer: " + method.name + " is a geometric technique: it has no map to shimmer");
+    Shimmer shimmer;
+    std::vector<signed char> before;
+    for (int frame = 0; frame < path.frames; ++frame) {
+        const Camera camera = camera_at(c.scene.camera, path, frame);
+        const ShadowSetup setup = method.compute_maps(gather_inputs(camera, c.scene.light, c.boxes), settings, nullptr);
+        const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
+        const std::vector<signed char> now = verdicts(c, samples, camera, setup, depth, resolution, bias);
+        FrameShimmer f{.frame = frame, .fallbacks = setup.fallbacks};
+        for (size_t i = 0; i < samples.size(); ++i) {
+            if (now[i] == kNotJudged) continue;
+            ++f.judged;
+            f.wrong += (now[i] == 1) == samples[i].lit;
+            if (before.empty() || before[i] == kNotJudged) continue;
+            ++f.transitions;
+            f.flips += now[i] != before[i];
+        }
+        shimmer.frames.push_back(std::move(f));
+        before = now;
+    }
+    return shimmer;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,48 @@
+#pragma once
+// Shimmer: shadows that flicker while the camera moves over a static scene. The receiver points the
+// camera sees at the start of a path stay fixed in the world; every frame the method builds its
+// maps for that frame's camera and judges each point inside the frame's view. The exact answer for a
+// fixed point under a fixed light never changes, so a verdict that flips between consecutive frames
+// is shimmer: the share of (point, consecutive frames) transitions whose verdict flips.
+#include <vector>
+
+#include "metrics/measurement.hpp"
+#include "scene/camera_path.hpp"
+
+namespace shadowlab {
+
+// A fixed world point on a receiver facing the light, seen at the path's start, and the reference's
+// verdict for it.
+struct ShimmerSample {
+    glm::dvec3 position;
+    double facing = 0.0;  // cos of the angle between its normal and the light
+    bool lit = false;
+};
+
+// The visible receiver pixels of the context's reference that face the light, as fixed points.
+std::vector<ShimmerSample> shimmer_samples(const MeasureContext& context);
+
+struct FrameShimmer {
+    int frame = 0;
+    size_t judged = 0;       // samples inside this frame's view frustum
+    size_t wrong = 0;        // of those, judged otherwise than the reference
+    size_t transitions = 0;  // samples judged in this frame and in the one before
+    size_t flips = 0;        // of those, whose verdict changed
+    std::vector<Note> fallbacks;  // what the method fell back to in this frame
+};
+
+struct Shimmer {
+    std::vector<FrameShimmer> frames;
+
+    size_t flips() const;
+    size_t transitions() const;
+    double share() const;  // flips / transitions (0 without transitions)
+};
+
+// Follows `path` from the context's camera, building the method's maps at `resolution` for every
+// frame and judging `samples` with `bias` (world units along the light; negative: slope-scaled per
+// point, as measure does). Throws std::invalid_argument for a geometric technique: it has no map.
+Shimmer measure_shimmer(const MeasureContext& context, const std::vector<ShimmerSample>& samples, const Method& method,
+                        const Settings& settings, int resolution, double bias, const CameraPath& path);
+
+}  // namespace shadowlab
