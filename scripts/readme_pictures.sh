@@ -40,12 +40,23 @@ x $shadowlab render data/scenes/volumes.json --method volumes --view camera --si
 x $shadowlab render data/scenes/volumes_eye_in_shadow.json --method volumes --set count=zpass --view stencil \
     --size 640x360 --out $images/volumes_stencil_zpass.png
 
+# Cascades: the map each pixel reads, the atlas, and the texels where they land.
+x $shadowlab render data/scenes/default.json --method cascades --set blend=0.2 --view camera --overlay cascade \
+    --size 640x360 --out $images/cascades_overlay.png
+x $shadowlab render data/scenes/default.json --method cascades --view shadowmap --size 640x360 \
+    --out $images/cascades_atlas.png
+x $shadowlab render data/scenes/box_on_plane.json --method cascades --view texels --resolution 128 --size 640x360 \
+    --out $images/cascades_texels.png
+
 [[ ${1:-} == --views ]] && exit 0
 
-# The measured trade: error against cost, and error as the light turns parallel to the view.
+# The measured trade: error against cost, error as the light turns parallel to the view, and
+# shimmer as the camera moves sideways (stabilized cascades against LiSPSM).
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 $shadowlab bench data/scenes/default.json --out "$work/bench"
 cp "$work/bench/bench.png" "$work/bench/bench_aliasing.png" $images/
 $shadowlab sweep data/scenes/default.json --out "$work/sweep"
 cp "$work/sweep/sweep_angle.png" $images/
+$shadowlab shimmer data/scenes/teaching.json --method lispsm --frames 30 --out "$work/shimmer"
+cp "$work/shimmer/shimmer.png" $images/shimmer_lispsm.png

@@ -225,6 +225,6 @@ TEST(Cascades, TheTraceRecordsEveryMapAndChangesNone) {
     for (size_t i = 0; i < plain.maps.size(); ++i) {
         EXPECT_EQ(traced.maps[i].world_to_uvz, plain.maps[i].world_to_uvz);
         EXPECT_NE(trace.find("output-" + std::to_string(i)), nullptr);
-        EXPECT_NE(trace.find("cascade-" + std::to_string(i) + "-tile"), nullptr);
+        EXPECT_NE(trace.find("cascade-" + std::to_string(i + 1) + "-tile"), nullptr);  // cascades count from 1
     }
 }

@@ -71,3 +71,20 @@ TEST(Shimmer, AGeometricTechniqueHasNoMapToShimmer) {
     const MeasureContext c = small_context("box_on_plane");
     EXPECT_THROW(shimmer_of(c, "volumes", {CameraPath::Kind::translate, 2, 0.0}), std::invalid_argument);
 }
+
+// Stabilized cascades (seed 003's snapping): a sideways path moves every light box by whole texels
+// and keeps each point's view depth, so no verdict flips; without the snap the boxes slide by
+// fractions of a texel and verdicts along shadow edges flip.
+TEST(Shimmer, StabilizedCascadesFlipNoVerdictAlongASidewaysPath) {
+    const MeasureContext c = small_context("teaching");
+    const Method& cascades = method_or_throw("cascades");
+    const CameraPath path{CameraPath::Kind::translate, 12, 0.0};
+    auto flips = [&](const std::string& stabilize) {
+        const Settings s = resolve_settings("cascades", cascades.settings, {{"fit", "sphere"}, {"stabilize", stabilize}});
+        return measure_shimmer(c, shimmer_samples(c), cascades, s, 512, -1.0, path);
+    };
+    const Shimmer stable = flips("on"), sliding = flips("off");
+    EXPECT_GT(stable.transitions(), 1000u);
+    EXPECT_EQ(stable.flips(), 0u);
+    EXPECT_GT(sliding.flips(), 0u);
+}

@@ -180,39 +180,40 @@ void record_splits(Trace& t, const ShadowInputs& in, const Settings& s, const Ca
     }
 }
 
+// Cascade i's steps, numbered from 1 for people; its slice, box and tile drawn in its map's colour.
 void record_cascade(Trace& t, const glm::dmat4& light_from_world, const Cascade& c, int i) {
-    const std::string id = "cascade-" + std::to_string(i), name = "cascade " + std::to_string(i);
-    Step& slice = t.add(id, "Cascade " + std::to_string(i) + ": slice and body",
+    const std::string k = std::to_string(i + 1), id = "cascade-" + k, name = "cascade " + k;
+    Step& slice = t.add(id, "Cascade " + k + ": slice and body",
                         "the view frustum between depths " + label_number(c.near) + " and " + label_number(c.far) +
                             "; its body: what can shadow the slice's part of the scene",
                         Space::world)
                       .value("near", c.near).value("far", c.far).value("body_volume", c.part.body.volume())
-                      .shape("slice " + std::to_string(i), c.slice, Role::view)
-                      .shape(name + " label", Label{c.slice.corners[7], name});
-    if (!c.part.body.empty()) slice.shape("B_" + std::to_string(i), c.part.body, Role::focus);
+                      .map_shape(i, "slice " + k, c.slice, Role::view)
+                      .map_shape(i, name + " label", Label{c.slice.corners[7], name});
+    if (!c.part.body.empty()) slice.shape("B_" + k, c.part.body, Role::focus);
 
     if (c.warp) {
-        Step& warp = t.add(id + "-warp", "Cascade " + std::to_string(i) + ": LiSPSM warp",
+        Step& warp = t.add(id + "-warp", "Cascade " + k + ": LiSPSM warp",
                            "LiSPSM inside the slice: n = (z_n + sqrt(z_n z_f)) / sin γ with z_n = the slice's near",
                            Space::light)
                          .value("z_n", c.near).value("n", c.warp->n).value("P", c.warp->ppls_from_light)
-                         .shape("B_" + std::to_string(i), PointSet{transformed(c.ws_cover, light_from_world)}, Role::focus);
+                         .shape("B_" + k, PointSet{transformed(c.ws_cover, light_from_world)}, Role::focus);
         draw_warp_frustum(warp, *c.warp);
     } else {
         const Aabb& box = c.snapped ? c.snapped->box : c.ls_fit;
-        Step& fit = t.add(id + "-fit", "Cascade " + std::to_string(i) + ": light box",
+        Step& fit = t.add(id + "-fit", "Cascade " + k + ": light box",
                           c.sphere ? "x, y: the slice's bounding sphere, centre ± r (its size fixed as the camera turns)"
                                    : "the light-space AABB of the slice's body",
                           Space::light)
                         .value("min", box.min).value("max", box.max)
-                        .shape("B_" + std::to_string(i), PointSet{transformed(c.ws_cover, light_from_world)}, Role::focus)
-                        .shape("box " + std::to_string(i), box, Role::map)
-                        .shape("box label", Label{box.max, name}, Role::map);
+                        .shape("B_" + k, PointSet{transformed(c.ws_cover, light_from_world)}, Role::focus)
+                        .map_shape(i, "box " + k, box, Role::map)
+                        .map_shape(i, "box label", Label{box.max, name}, Role::map);
         if (c.sphere) {
             const glm::dvec3 ls_centre = transform_point(light_from_world, c.sphere->centre);
             std::vector<glm::dvec4> circle;
-            for (int k = 0; k < 48; ++k) {
-                const double a = 2 * std::numbers::pi * k / 48;
+            for (int n = 0; n < 48; ++n) {
+                const double a = 2 * std::numbers::pi * n / 48;
                 circle.emplace_back(ls_centre + c.sphere->radius * glm::dvec3(std::cos(a), std::sin(a), 0), 1.0);
             }
             fit.value("radius", c.sphere->radius).shape("sphere", PolygonSet{}.add(circle));
@@ -229,13 +230,13 @@ void record_cascade(Trace& t, const glm::dmat4& light_from_world, const Cascade&
     }
 
     const glm::dvec4 vp = c.map.viewport;
-    Step& tile = t.add(id + "-tile", "Cascade " + std::to_string(i) + ": its tile",
+    Step& tile = t.add(id + "-tile", "Cascade " + k + ": its tile",
                        "the tile matrix, NDC to texture (v down): x by s/2, y by -s/2, offset s/2 + s (column, row); s = " +
                            label_number(c.tile.side),
                        Space::unit)
                      .value("tile_matrix", atlas_tile_matrix(c.tile)).value("viewport", vp)
-                     .shape("tile " + std::to_string(i), Aabb{{vp.x, vp.y, 0.0}, {vp.z, vp.w, 1.0}})
-                     .shape("tile label", Label{{vp.x, vp.w, 1.0}, "tile " + std::to_string(i)});
+                     .map_shape(i, "tile " + k, Aabb{{vp.x, vp.y, 0.0}, {vp.z, vp.w, 1.0}})
+                     .map_shape(i, "tile label", Label{{vp.x, vp.w, 1.0}, "tile " + k});
     draw_unit_cube(tile);
 }
 
@@ -245,22 +246,22 @@ void record_selection(Trace& t, const ShadowInputs& in, const CascadeOptions& o,
                            "a point reads the first map whose (u, v) holds it", Space::world);
         for (size_t i = 0; i < setup.maps.size(); ++i) {
             const Frustum volume = preimage_of_box(setup.maps[i].world_to_uvz, Aabb{glm::dvec3(0.0), glm::dvec3(1.0)});
-            step.shape("map " + std::to_string(i), volume, Role::map)
-                .shape("map " + std::to_string(i) + " label", Label{volume.corners[6], "map " + std::to_string(i)});
+            const std::string name = "map " + std::to_string(i + 1);
+            step.map_shape(int(i), name, volume, Role::map).map_shape(int(i), name + " label", Label{volume.corners[6], name});
         }
         return;
     }
     Step& step = t.add("cascade-selection", "Selection by view depth",
-                       "map i serves view depths [C_i, C_i+1); over the last " + label_number(100 * o.blend) +
+                       "cascade i serves view depths [C_i-1, C_i); over the last " + label_number(100 * o.blend) +
                            "% of a split it crossfades into the next",
                        Space::world)
                      .value("blend_band", o.blend);
     for (size_t i = 0; i + 1 < o.depths.size(); ++i) {
         const std::vector<glm::dvec4> face = depth_face(in.camera, o.depths[i]);
-        const std::string name = "map " + std::to_string(i);
-        step.shape(name + " from", PolygonSet{}.add(face))
-            .shape(name + " label", Label{glm::dvec3(face[2]), name + ": [" + label_number(o.depths[i]) + ", " +
-                                                                      label_number(o.depths[i + 1]) + ")"});
+        const std::string name = "cascade " + std::to_string(i + 1);
+        step.map_shape(int(i), name + " from", PolygonSet{}.add(face))
+            .map_shape(int(i), name + " label", Label{glm::dvec3(face[2]), name + ": [" + label_number(o.depths[i]) + ", " +
+                                                                               label_number(o.depths[i + 1]) + ")"});
         if (i > 0 && o.blend > 0.0) {
             const double band_start = o.depths[i] - o.blend * (o.depths[i] - o.depths[i - 1]);
             step.shape(name + " blend", PolygonSet{}.add(depth_face(in.camera, band_start)), Role::map);
@@ -284,7 +285,7 @@ ShadowSetup compute_cascades(const ShadowInputs& in, const Settings& s, Trace* t
     for (int i = 0; i < o.count; ++i) {
         cascades.push_back(build_cascade(in, o, kernel, light_from_world, i));
         if (o.lispsm && !cascades.back().warp)
-            add_fallback(setup, Note{NoteKind::parallel_light, "cascade " + std::to_string(i) +
+            add_fallback(setup, Note{NoteKind::parallel_light, "cascade " + std::to_string(i + 1) +
                                                                    ": the warp has faded to nothing; its box fit used"});
         setup.maps.push_back(cascades.back().map);
     }

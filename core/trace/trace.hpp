@@ -89,6 +89,7 @@ struct NamedGeometry {
     std::string name;
     TraceGeometry geometry;
     Role role = Role::step;
+    int map = -1;  // the setup's map the shape belongs to (a cascade's slice, box, tile): drawn in that map's colour
 };
 
 struct Step {
@@ -105,6 +106,11 @@ struct Step {
     }
     Step& shape(std::string name, TraceGeometry g, Role role = Role::step) {
         geometry.push_back({std::move(name), std::move(g), role});
+        return *this;
+    }
+    // A shape of one map of the setup (map = its index): its role, drawn in the map's own colour.
+    Step& map_shape(int map, std::string name, TraceGeometry g, Role role = Role::step) {
+        geometry.push_back({std::move(name), std::move(g), role, map});
         return *this;
     }
 };

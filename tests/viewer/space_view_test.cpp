@@ -61,7 +61,7 @@ bool has_any(const unsigned char* c, const std::vector<glm::dvec3>& colours) {
 
 std::vector<glm::dvec3> step_colours(const Step& step) {
     std::vector<glm::dvec3> colours;
-    for (const NamedGeometry& g : step.geometry) colours.push_back(role_style(g.role).colour);
+    for (const NamedGeometry& g : step.geometry) colours.push_back(shape_colour(g));
     return colours;
 }
 

@@ -3,6 +3,7 @@
 // volume cyan, the camera white (a touch of blue: never the grey of anti-aliased text), and the step's own construction the highlight yellow.
 #include <stdexcept>
 
+#include "render/map_overlay.hpp"
 #include "views/space_parts.hpp"
 
 namespace shadowlab {
@@ -27,5 +28,13 @@ const RoleStyle& role_style(Role role) {
 }
 
 glm::dvec3 dimmed(const glm::dvec3& colour) { return 0.5 * (colour + kSpaceBackground); }
+
+glm::dvec3 shape_colour(const NamedGeometry& g) {
+    return g.map >= 0 ? glm::dvec3(kMapPalette[g.map % kMapPalette.size()]) : role_style(g.role).colour;
+}
+
+std::string shape_legend(const NamedGeometry& g, const ShadowSetup& setup) {
+    return g.map >= 0 ? map_name(setup, static_cast<size_t>(g.map)) : role_style(g.role).legend;
+}
 
 }  // namespace shadowlab

@@ -52,6 +52,10 @@ struct RoleStyle {
 const RoleStyle& role_style(Role role);
 extern const glm::dvec3 kSpaceBackground;
 glm::dvec3 dimmed(const glm::dvec3& colour);  // halfway to the background: an earlier step's shape
+// A shape's colour and legend: its map's (a cascade's slice, box, tile: the Camera view's overlay
+// colours, named as the views name maps) or its role's.
+glm::dvec3 shape_colour(const NamedGeometry& g);
+std::string shape_legend(const NamedGeometry& g, const ShadowSetup& setup);
 
 struct LegendEntry {
     glm::dvec3 colour;

@@ -16,15 +16,16 @@ Stroke stroke_for(const NamedGeometry& g, bool current) {
     const bool faces = std::holds_alternative<ConvexPolyhedron>(g.geometry) || std::holds_alternative<PolygonSet>(g.geometry);
     // Silhouette edges stay thick after their step: they lie on the meshes' own edges.
     const bool edges = std::holds_alternative<SegmentSet>(g.geometry);
-    const glm::dvec3 earlier = g.role == Role::step ? kEarlierStep : dimmed(role_style(g.role).colour);
-    return {.colour = current ? role_style(g.role).colour : earlier,
+    const glm::dvec3 earlier = g.role == Role::step && g.map < 0 ? kEarlierStep : dimmed(shape_colour(g));
+    return {.colour = current ? shape_colour(g) : earlier,
             .width = current ? (edges ? 5.0 : 3.5) : (edges ? 3.0 : 1.5),
             .opacity = faces ? (current ? 0.35 : 0.08) : 1.0};  // earlier faces faint: several overlap
 }
 
-void draw_shape(SpaceCanvas& canvas, const NamedGeometry& g, const Placement& placement, bool current) {
+void draw_shape(SpaceCanvas& canvas, const NamedGeometry& g, const ShadowSetup& setup, const Placement& placement,
+                bool current) {
     const Stroke stroke = stroke_for(g, current);
-    const bool drawn = canvas.draw(geometry_polydata(g.geometry, placement), stroke, current ? role_style(g.role).legend : "");
+    const bool drawn = canvas.draw(geometry_polydata(g.geometry, placement), stroke, current ? shape_legend(g, setup) : "");
     if (const auto outline = outline_polydata(g.geometry, placement))
         canvas.draw(*outline, {.colour = stroke.colour, .width = current ? 2.5 : 1.0}, "");
     if (drawn && !current) canvas.list(kEarlierStep, kEarlierLegend);
@@ -42,7 +43,7 @@ void draw_steps(SpaceCanvas& canvas, const Inspection& in, size_t from, size_t t
         if (!step_from_world) continue;
         Placement placement = canvas.frame().placement_from(*step_from_world);
         placement.reach = in.inputs.scene_bounds.diagonal();  // a shadow volume's vertices at infinity
-        for (const NamedGeometry& g : steps[i].geometry) draw_shape(canvas, g, placement, i == chosen);
+        for (const NamedGeometry& g : steps[i].geometry) draw_shape(canvas, g, in.setup, placement, i == chosen);
     }
 }
 

@@ -1,5 +1,6 @@
 // The shadow-map pass checked on its pixels under Xvfb: shadows where the map puts them for every
 // map method and technique, and the GPU lookup against the CPU lookup (core/maps/map_lookup).
+#include <map>
 #include <array>
 #include <iostream>
 #include <gtest/gtest.h>
@@ -80,6 +81,24 @@ TEST_P(GpuAgreesWithCpu, OnVisiblePixelsAwayFromShadowEdges) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuAgreesWithCpu, ::testing::Values("box_on_plane", "default", "spot"));
+
+// Cascades: four maps in an atlas, chosen by view depth and crossfaded over a blend band, or by
+// their tiles' bounds; the GPU selects, blends and looks up as the CPU does.
+TEST(GpuAgreesWithCpuOnCascades, ByViewDepthWithABlendBandAndByTileBounds) {
+    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/default.json");
+    scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
+    for (const std::map<std::string, std::string>& settings :
+         {std::map<std::string, std::string>{{"blend", "0.3"}}, std::map<std::string, std::string>{{"select", "tile"}}}) {
+        InspectionRequest request{.method = "cascades", .settings = settings, .resolution = 2048};
+        const Agreement a = gpu_against_cpu_lookup(inspect_scene(scene, request), kWidth, kHeight);
+        ASSERT_EQ(a.undrawn, 0u);
+        ASSERT_GT(a.compared, kWidth * kHeight / 4u);
+        EXPECT_GE(a.share(), 0.995) << settings.begin()->first << ": " << a.compared - a.agreed << " of " << a.compared
+                                    << " pixels differ";
+        std::cout << "cascades, " << settings.begin()->first << "=" << settings.begin()->second
+                  << ": GPU and CPU agree on " << a.agreed << " of " << a.compared << " pixels away from edges\n";
+    }
+}
 
 // A million units from the origin float32 world coordinates step by 0.06 units: the Camera view
 // draws relative to the eye, so the GPU still agrees with the CPU there (issue 11).
