@@ -24,11 +24,7 @@ namespace {
 
 constexpr int kWidth = 480, kHeight = 270;
 
-Scene teaching() {
-    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/teaching.json");
-    scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
-    return scene;
-}
+Scene teaching() { return shipped_scene("teaching", kWidth, kHeight); }
 
 Inspection inspect_at_image_size(const Scene& scene, const std::string& method) {
     InspectionRequest request;
@@ -165,8 +161,7 @@ RenderOptions box_on_plane_render(const std::string& light, const std::string& o
 // --light 0,35 puts the sun at +x: the box's shadow falls toward -x; --light 180,35 the other way.
 TEST(RenderLight, TurnsTheSunAsTheControlsPanelDoes) {
     const std::string out = ::testing::TempDir() + "render_light_" + std::to_string(getpid()) + ".png";
-    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/box_on_plane.json");
-    scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
+    const Scene scene = shipped_scene("box_on_plane", kWidth, kHeight);
     const glm::ivec2 size = image_size_within(scene.camera, kWidth, kHeight);
     const glm::ivec2 minus_x = pixel_of(scene.camera, {-2.6, 0.0, 0.0}, size.x, size.y);
     const glm::ivec2 plus_x = pixel_of(scene.camera, {2.6, 0.0, 0.0}, size.x, size.y);

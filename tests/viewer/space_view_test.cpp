@@ -30,20 +30,14 @@ const std::vector<std::string> kShippedMethods = [] {
     return names;
 }();
 
-Scene shipped_scene(const std::string& name) {
-    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/" + name + ".json");
-    scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
-    return scene;
-}
-
-Scene box_on_plane() { return shipped_scene("box_on_plane"); }
+Scene box_on_plane() { return shipped_scene("box_on_plane", kWidth, kHeight); }
 
 Inspection inspect_shipped(const std::string& scene, const std::string& method) {
     InspectionRequest request;
     request.method = method;
     request.resolution = 256;
     request.image_width = kWidth;
-    return inspect_scene(shipped_scene(scene), request);
+    return inspect_scene(shipped_scene(scene, kWidth, kHeight), request);
 }
 
 Inspection inspect_box_on_plane(const std::string& method) { return inspect_shipped("box_on_plane", method); }

@@ -25,11 +25,7 @@ namespace {
 
 constexpr int kWidth = 640, kHeight = 360;
 
-Scene box_on_plane() {
-    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/box_on_plane.json");
-    scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
-    return scene;
-}
+Scene box_on_plane() { return shipped_scene("box_on_plane", kWidth, kHeight); }
 
 // The distance from p to the nearest scene triangle whose plane it projects into (inside the
 // triangle, up to `slack` of its plane's units), and that triangle's index; -1 where none.

@@ -9,6 +9,7 @@
 #include "reference/exact_shadows.hpp"
 #include "render/rgb_image.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_loader.hpp"
 #include "views/offscreen_view.hpp"
 
 namespace shadowlab::testing {
@@ -82,6 +83,13 @@ inline Agreement agreement(const RgbImage& gpu, const std::vector<int8_t>& cpu, 
             a.agreed += (c[0] > 127) == (cpu[i] == 1);
         }
     return a;
+}
+
+// A shipped scene (data/scenes/NAME.json) whose camera's aspect is the image's, width x height.
+inline Scene shipped_scene(const std::string& name, int width, int height) {
+    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/" + name + ".json");
+    scene.camera.aspect = static_cast<double>(width) / height;
+    return scene;
 }
 
 inline Inspection inspect(const Scene& scene, const std::string& method, int resolution) {
