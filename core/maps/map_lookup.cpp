@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/preimage.hpp"
+
 namespace shadowlab {
 namespace {
 
@@ -118,6 +120,10 @@ MapBlend blend_of(const ShadowSetup& setup, const glm::dvec3& world) {
     const double weight = std::clamp((view_depth(s, world) - (far - band)) / band, 0.0, 1.0);
     if (!(weight > 0.0)) return {.map = map};
     return {.map = map, .next = map + 1, .weight = weight};
+}
+
+Frustum map_volume(const ShadowMap& map) {
+    return preimage_of_box(map.world_to_uvz, Aabb{glm::dvec3(0.0), glm::dvec3(1.0)});
 }
 
 double tile_resolution(const ShadowMap& map, int texture_resolution) {

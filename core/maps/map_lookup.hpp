@@ -5,6 +5,7 @@
 #include <optional>
 #include <glm/glm.hpp>
 
+#include "geometry/frustum.hpp"
 #include "maps/shadow_map.hpp"
 
 namespace shadowlab {
@@ -33,6 +34,10 @@ struct MapBlend {
     double weight = 0.0;  // next's share of the verdict, in (0, 1] inside a band
 };
 MapBlend blend_of(const ShadowSetup& setup, const glm::dvec3& world);
+
+// The world region a linear map or cube face covers: its unit cube [0,1]^3 taken back through
+// world_to_uvz (near face d = 0 first). A paraboloid has no such box.
+Frustum map_volume(const ShadowMap& map);
 
 // Map texels per side of one map's tile in a texture of `texture_resolution` texels per side.
 double tile_resolution(const ShadowMap& map, int texture_resolution);

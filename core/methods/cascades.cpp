@@ -245,7 +245,7 @@ void record_selection(Trace& t, const ShadowInputs& in, const CascadeOptions& o,
         Step& step = t.add("cascade-selection", "Selection by tile bounds",
                            "a point reads the first map whose (u, v) holds it", Space::world);
         for (size_t i = 0; i < setup.maps.size(); ++i) {
-            const Frustum volume = preimage_of_box(setup.maps[i].world_to_uvz, Aabb{glm::dvec3(0.0), glm::dvec3(1.0)});
+            const Frustum volume = map_volume(setup.maps[i]);
             const std::string name = "map " + std::to_string(i + 1);
             step.map_shape(int(i), name, volume, Role::map).map_shape(int(i), name + " label", Label{volume.corners[6], name});
         }

@@ -158,7 +158,7 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
         map.world_to_uvz = uvz_from_pps * camera.pps_from_world;
         record(trace, [&](Trace& t) {
             // The PPS light's frustum: the unit cube taken back through the fit (before any inversion of depth).
-            const Frustum light_frustum = preimage_of_box(fit.map.world_to_uvz, Aabb{glm::dvec3(0.0), glm::dvec3(1.0)});
+            const Frustum light_frustum = map_volume(fit.map);
             t.add("psm-light-frustum", inverted ? "Inverted projection (Kozlov)" : "Light frustum in PPS",
                   inverted ? "light behind the viewer: rays converge on the PPS light, depth reversed (d' = 1 - d)"
                            : "perspective from the PPS light covering the body",

@@ -372,7 +372,7 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
         t.add("xpsm-17", "XPSM Transform", "LightSpace, PPLS Transform, UnitCubeTransform, NormalizedSpace",
               Space::world)
             .value("XPSM_Transform", map.world_to_uvz)
-            .shape("map volume", preimage_of_box(map.world_to_uvz, Aabb{glm::dvec3(0.0), glm::dvec3(1.0)}), Role::map);
+            .shape("map volume", map_volume(map), Role::map);
         // The depth range the bias is divided by: MaxZ - MinZ as step 15 widens it for a flat region.
         const glm::dvec3 deepest{focus.max.x, focus.max.y, z_min};
         draw_dimension(t.add("xpsm-18", "Z bias", "Z' = (Z - bias / (MaxZ - MinZ)) / W", Space::ppls)

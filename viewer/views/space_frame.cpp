@@ -67,7 +67,7 @@ std::vector<glm::dvec3> map_volume_corners(const ShadowSetup& setup) {
     std::vector<glm::dvec3> corners;
     for (const ShadowMap& map : setup.maps)
         if (map.projection != Projection::paraboloid)
-            for (const glm::dvec3& c : linear_map_volume(map).corners) corners.push_back(c);
+            for (const glm::dvec3& c : map_volume(map).corners) corners.push_back(c);
     return corners;
 }
 
@@ -116,8 +116,8 @@ Aabb framed_region(const Inspection& in, ViewKind view, const glm::dmat4& from_w
     const Aabb body = box_in_space(from_world, body_points(in));
     Aabb region = view == ViewKind::world ? box_in_space(from_world, world_points(in)) : body;
     if (view == ViewKind::ppls && in.has_map())
-        if (const Aabb map_volume = box_in_space(from_world, map_volume_corners(in.setup)); !map_volume.empty()) {
-            region = map_volume;
+        if (const Aabb volumes = box_in_space(from_world, map_volume_corners(in.setup)); !volumes.empty()) {
+            region = volumes;
             join(region, body);
         }
     if (!chosen || region.empty()) return region;
@@ -138,17 +138,6 @@ glm::dvec3 direction_in_space(const glm::dmat4& from_world, const glm::dvec3& wo
 }
 
 }  // namespace
-
-Frustum linear_map_volume(const ShadowMap& map) {
-    const glm::dmat4 world_from_uvz = glm::inverse(map.world_to_uvz);
-    Frustum volume{};
-    const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // Frustum's order: near face, then far
-    for (int i = 0; i < 8; ++i) {
-        const glm::dvec4 h = world_from_uvz * glm::dvec4(corner[i % 4][0], corner[i % 4][1], i < 4 ? 0.0 : 1.0, 1.0);
-        volume.corners[i] = glm::dvec3(h) / h.w;
-    }
-    return volume;
-}
 
 std::optional<glm::dmat4> world_to(const Inspection& in, Space space) {
     if (space == Space::world) return glm::dmat4(1.0);

@@ -16,9 +16,6 @@ namespace shadowlab {
 // lacks); nullopt when the method has no such space.
 std::optional<glm::dmat4> world_to(const Inspection& in, Space space);
 
-// A linear map's volume: its cube [0,1]^3 carried back to the world (paraboloids have none).
-Frustum linear_map_volume(const ShadowMap& map);
-
 // The space one view draws in, and what its camera frames there.
 struct SpaceFrame {
     Space space = Space::world;  // world, light, or ppls (the unit space for a map with no warp)

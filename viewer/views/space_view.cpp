@@ -32,7 +32,7 @@ void draw_map_volumes(SpaceCanvas& canvas, const ShadowSetup& setup, ViewReport&
             report.notes.push_back("a paraboloid map has no box-shaped volume: not drawn");
             continue;
         }
-        const Frustum volume = linear_map_volume(m);
+        const Frustum volume = map_volume(m);
         canvas.draw(geometry_polydata(volume, placement), {.colour = map.colour, .width = 2.0}, map.legend);
         if (const auto corner = placed_point(placement, volume.corners[6])) canvas.label(*corner, "[0,1]³", map.colour);
     }
