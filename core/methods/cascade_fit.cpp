@@ -1,6 +1,7 @@
 #include "methods/cascade_fit.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace shadowlab {
@@ -18,17 +19,19 @@ Sphere slice_sphere(const Camera& camera, double near, double far) {
     return {.centre = camera.position + t * camera.view_direction(), .radius = std::hypot(far - t, far * k)};
 }
 
-double quantize_up(double length) {
-    if (!(length > 0.0)) return length;  // a flat box: nothing to round
-    const double step = std::ldexp(1.0, std::ilogb(length) - 6);
-    return std::ceil(length / step) * step;
+double quantize_up(double length, double unit) {
+    assert(unit > 0.0);  // the scene's bounds are padded never to be flat (gather_inputs)
+    const double units = length / unit;
+    if (!(units > 0.0)) return length;  // a flat box: nothing to round
+    const double step = std::ldexp(1.0, std::ilogb(units) - 6);
+    return std::ceil(units / step) * step * unit;
 }
 
-SnappedBox snap_to_texels(const Aabb& ls_box) {
+SnappedBox snap_to_texels(const Aabb& ls_box, double unit) {
     SnappedBox snapped{.box = ls_box};
     for (int axis = 0; axis < 2; ++axis) {
         // extent' >= extent + one cell: the corner moves down by less than a cell and the box still holds.
-        const double extent = quantize_up(ls_box.extent()[axis] * kSnapCells / (kSnapCells - 1.0));
+        const double extent = quantize_up(ls_box.extent()[axis] * kSnapCells / (kSnapCells - 1.0), unit);
         const double cell = extent / kSnapCells;
         const double corner = std::floor(ls_box.min[axis] / cell) * cell;
         snapped.offset_cells[axis] = (ls_box.min[axis] - corner) / cell;

@@ -29,17 +29,19 @@ Sphere slice_sphere(const Camera& camera, double near, double far);
 // atlas of 2 x 2 tiles and up) then moves by whole texels when the box moves by whole cells.
 constexpr int kSnapCells = 256;
 
-// A length rounded up to a multiple of 1/64 of its power of two: lengths that differ by rounding
-// noise (a sphere's radius for two camera turns) give the same value, within 1/64 of the length.
-double quantize_up(double length);
+// A length rounded up to a multiple of 1/64 of its power of two, counted in `unit`s (the scene's
+// size, so that the same scene scaled rounds alike): lengths that differ by rounding noise (a
+// sphere's radius for two camera turns) give the same value, within 1/64 of the length.
+double quantize_up(double length, double unit);
 
 // The light-space box with its x and y extents quantized and its corner moved down onto the grid of
-// extent / kSnapCells (the grid's lines then hold the light space's origin, the world origin's ray):
+// extent / kSnapCells (the grid's lines then hold the light space's origin: the cascades put it at the
+// scene's centre):
 // the extent grows by a cell first, so the moved box still holds the original.
 struct SnappedBox {
     Aabb box;
     glm::dvec2 offset_cells{0.0};  // how far the corner moved, in grid cells ([0, 1) each)
 };
-SnappedBox snap_to_texels(const Aabb& ls_box);
+SnappedBox snap_to_texels(const Aabb& ls_box, double unit);
 
 }  // namespace shadowlab

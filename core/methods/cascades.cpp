@@ -104,7 +104,8 @@ void fit_light_box(const ShadowInputs& in, const CascadeOptions& o, const glm::d
     c.ls_fit = bounds_of(transformed(c.ws_cover, light_from_world));
     if (c.sphere) {
         const glm::dvec3 ls_centre = transform_point(light_from_world, c.sphere->centre);
-        const double radius = o.stabilize ? quantize_up(c.sphere->radius) : c.sphere->radius;
+        const double radius =
+            o.stabilize ? quantize_up(c.sphere->radius, in.scene_bounds.diagonal()) : c.sphere->radius;
         c.ls_fit.min = {ls_centre.x - radius, ls_centre.y - radius, c.ls_fit.min.z};
         c.ls_fit.max = {ls_centre.x + radius, ls_centre.y + radius, c.ls_fit.max.z};
     }
@@ -113,7 +114,7 @@ void fit_light_box(const ShadowInputs& in, const CascadeOptions& o, const glm::d
         c.ls_fit.min.z = ls_scene.min.z;
         c.ls_fit.max.z = ls_scene.max.z;
     }
-    if (o.stabilize) c.snapped = snap_to_texels(c.ls_fit);
+    if (o.stabilize) c.snapped = snap_to_texels(c.ls_fit, in.scene_bounds.diagonal());
 }
 
 Cascade build_cascade(const ShadowInputs& in, const CascadeOptions& o, BodyKernel kernel,
@@ -219,7 +220,8 @@ void record_cascade(Trace& t, const glm::dmat4& light_from_world, const Cascade&
             fit.value("radius", c.sphere->radius).shape("sphere", PolygonSet{}.add(circle));
         }
         if (c.snapped) {
-            // The snap moves the box's corner by under one cell of extent / 256 onto the grid through the origin.
+            // The snap moves the box's corner by under one cell of extent / 256 onto the grid through the scene's
+            // centre.
             const glm::dvec2 cell = glm::dvec2(c.snapped->box.extent()) / double(kSnapCells);
             fit.value("snap_offset_cells", c.snapped->offset_cells).value("cell", cell)
                 .shape("unsnapped", c.ls_fit)
@@ -277,9 +279,13 @@ ShadowSetup compute_cascades(const ShadowInputs& in, const Settings& s, Trace* t
     const auto body = start_warp("cascades", in, s, setup, trace);
     if (!body) return setup;
 
-    // A light space that does not turn with the camera when stabilizing; else y along the view, as focused.
-    const glm::dvec3 up_hint = o.stabilize ? stable_up_hint(in.light.direction) : in.camera.view_direction();
-    const glm::dmat4 light_from_world = light_basis(in.light.direction, up_hint).light_from_world;
+    // A light space that does not turn with the camera when stabilizing, its origin (where the snap grid
+    // is anchored) the scene's centre: the grid moves with the scene, so a scene moved a million units
+    // away is snapped as it was at home. Else y along the view, as focused.
+    const glm::dmat4 light_from_world =
+        o.stabilize ? light_basis(in.light.direction, stable_up_hint(in.light.direction), in.scene_bounds.center())
+                          .light_from_world
+                    : light_basis(in.light.direction, in.camera.view_direction()).light_from_world;
     const BodyKernel kernel = *body_kernel_from_string(s.choice("kernel"));
     std::vector<Cascade> cascades;
     for (int i = 0; i < o.count; ++i) {
