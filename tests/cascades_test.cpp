@@ -9,6 +9,7 @@
 #include "methods/cascade_atlas.hpp"
 #include "methods/cascade_splits.hpp"
 #include "methods/cascades.hpp"
+#include "metrics/measurement.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 
@@ -77,26 +78,54 @@ TEST(CascadeSplits, ManualFractionsOfTheDepthRange) {
     EXPECT_EQ(manual_splits(1.0, 101.0, {0.05, 0.2, 0.5}), (std::vector<double>{1.0, 6.0, 21.0, 51.0, 101.0}));
 }
 
-TEST(CascadeAtlas, TwoByTwoTileMatrixScalesByAQuarterAndTilesSitOnWholeTexelsApart) {
+TEST(CascadeAtlas, TwoByTwoTileMatrixScalesByAQuarter) {
+    const std::vector<AtlasTile> tiles = atlas_layout(4, {});
     for (int tile = 0; tile < 4; ++tile) {
-        const AtlasTile t = atlas_tile(tile, 4);
-        const glm::dmat4 m = atlas_tile_matrix(t);
+        const glm::dmat4 m = atlas_tile_matrix(tiles[tile]);
         EXPECT_EQ(m[0][0], 0.25);
         EXPECT_EQ(m[1][1], -0.25);
         EXPECT_EQ(m[3][0], 0.25 + 0.5 * (tile % 2));
         EXPECT_EQ(m[3][1], 0.25 + 0.5 * (tile / 2));
     }
-    for (int count = 1; count <= kMaxCascades; ++count)
-        for (int i = 0; i < count; ++i) {
-            const glm::dvec4 a = tile_viewport(atlas_tile(i, count));
-            EXPECT_TRUE(a.x >= 0 && a.y >= 0 && a.z <= 1 && a.w <= 1 && a.z - a.x == a.w - a.y) << count << " " << i;
-            const glm::dvec4 texels = a * 512.0;
-            EXPECT_EQ(texels, glm::round(texels)) << "tile edges on texel boundaries";
+}
+
+// Any count, any mix of sides: tiles inside the texture, on whole texels of a 512² atlas, none
+// overlapping, each as large as the texture allows (the largest can't double: the areas would pass 1).
+TEST(CascadeAtlas, TilesOfAnySidesFitWithoutOverlapAndAsLargeAsTheyCan) {
+    std::vector<std::pair<int, std::vector<double>>> layouts;  // count, sides
+    for (int count = 1; count <= kMaxCascades; ++count) layouts.push_back({count, {}});
+    layouts.push_back({4, {1, 0.5, 0.5, 0.5}});
+    layouts.push_back({5, {0.25, 1, 0.5, 0.125, 0.5}});
+    layouts.push_back({8, {1, 1, 0.5, 0.5, 0.25, 0.25, 0.125, 0.125}});
+    std::mt19937 rng(3);
+    for (int k = 0; k < 200; ++k) {
+        std::vector<double> sides(1 + rng() % kMaxCascades);
+        for (double& side : sides) side = std::exp2(-double(rng() % 4));
+        layouts.push_back({int(sides.size()), sides});
+    }
+    for (const auto& [n, sides] : layouts) {
+        const std::vector<AtlasTile> tiles = atlas_layout(n, sides);
+        ASSERT_EQ(int(tiles.size()), n);
+        double area = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec4 a = tile_viewport(tiles[i]);
+            EXPECT_TRUE(a.x >= 0 && a.y >= 0 && a.z <= 1 && a.w <= 1) << n << " tile " << i;
+            EXPECT_EQ(a * 512.0, glm::round(a * 512.0)) << "tile edges on texel boundaries";
+            if (!sides.empty()) EXPECT_EQ(tiles[i].side / tiles[0].side, sides[i] / sides[0]) << "the sides asked for";
             for (int j = 0; j < i; ++j) {
-                const glm::dvec4 b = tile_viewport(atlas_tile(j, count));
-                EXPECT_TRUE(a.x >= b.z || b.x >= a.z || a.y >= b.w || b.y >= a.w) << count << ": tiles " << i << ", " << j;
+                const glm::dvec4 b = tile_viewport(tiles[j]);
+                EXPECT_TRUE(a.x >= b.z || b.x >= a.z || a.y >= b.w || b.y >= a.w) << n << ": tiles " << i << ", " << j;
             }
+            area += tiles[i].side * tiles[i].side;
         }
+        EXPECT_GT(4 * area, 1.0) << "at twice the side they would not fit";
+    }
+}
+
+TEST(CascadeAtlas, ANearCascadeTwiceTheSideGetsFourTimesTheTexels) {
+    const std::vector<AtlasTile> tiles = atlas_layout(4, {1, 0.5, 0.5, 0.5});
+    EXPECT_EQ(tiles[0].side, 0.5);
+    for (int i = 1; i < 4; ++i) EXPECT_EQ(tiles[i].side, 0.25);
 }
 
 // The map reads the texel grid through the light space's origin, the scene's centre: after any camera
@@ -222,6 +251,10 @@ TEST(Cascades, BadSettingsAreRefusedWithTheirNames) {
         {{{"fit", "tight"}}, "fit"},
         {{{"warp", "lispsm"}, {"stabilize", "on"}}, "stabilize"},
         {{{"warp", "lispsm"}, {"select", "tile"}}, "select"},
+        {{{"tiles", "1,0.5"}}, "tiles"},
+        {{{"tiles", "1,0.3,0.5,0.5"}}, "tiles"},
+        {{{"tiles", "2,1,1,1"}}, "tiles"},
+        {{{"count", "8"}, {"tiles", "1,1,1,1,1,1,1,0.125"}}, "tiles"},  // the last would be 1/32 of the atlas
     };
     for (const auto& [set, name] : cases) {
         const std::string message = refusal(set);
@@ -255,5 +288,23 @@ TEST(Cascades, TheTraceRecordsEveryMapAndChangesNone) {
         EXPECT_EQ(traced.maps[i].world_to_uvz, plain.maps[i].world_to_uvz);
         EXPECT_NE(trace.find("output-" + std::to_string(i)), nullptr);
         EXPECT_NE(trace.find("cascade-" + std::to_string(i + 1) + "-tile"), nullptr);  // cascades count from 1
+    }
+}
+
+// The resolution per cascade, measured: a cascade given half the tile side has twice the
+// perspective aliasing m (texels per pixel halve) on the same pixels; the others keep theirs.
+TEST(Cascades, HalvingACascadesTileDoublesItsMeasuredAliasing) {
+    const MeasureContext context = prepare_measurement(load_scene(source_path("data/scenes/default.json")), 480, 270);
+    const Method& method = method_or_throw("cascades");
+    const auto per_map = [&](const std::string& tiles) {
+        const Settings s = resolve_settings("cascades", method.settings, {{"tiles", tiles}});
+        return measure(context, method, s, 2048, -1.0).by_map->maps;
+    };
+    const std::vector<MapShare> equal = per_map("1,1,1,1"), halved = per_map("1,1,0.5,1");
+    for (size_t i = 0; i < equal.size(); ++i) {
+        ASSERT_GT(equal[i].pixels, 0u);
+        EXPECT_EQ(halved[i].pixels, equal[i].pixels);
+        const double ratio = halved[i].m_perspective.mean / equal[i].m_perspective.mean;
+        EXPECT_NEAR(ratio, i == 2 ? 2.0 : 1.0, 1e-6) << "cascade " << i + 1;
     }
 }

@@ -4,6 +4,7 @@
 // their texels on little ground: the perspective aliasing a single map has, shared out by slice.
 #include "methods/cascades.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -35,6 +36,7 @@ struct CascadeOptions {
     bool lispsm = false;
     double blend = 0.0;
     bool by_tile = false;
+    std::vector<AtlasTile> tiles;  // one per cascade
 };
 
 [[noreturn]] void refuse(const std::string& setting, const std::string& value, const std::string& why) {
@@ -56,6 +58,24 @@ std::vector<double> split_depths(const Settings& s, const Camera& camera, int co
     return manual_splits(camera.near, shadow_distance, fractions);
 }
 
+// The atlas: tiles of the relative sides asked for (the resolution per cascade), none below the smallest.
+std::vector<AtlasTile> atlas_tiles(const Settings& s, int count) {
+    const std::vector<double> sides = s.numbers("tiles");
+    if (!sides.empty() && int(sides.size()) != count)
+        refuse("tiles", s.choice("tiles"), std::to_string(count) + " sides needed for count=" + std::to_string(count));
+    for (double side : sides)
+        if (side != std::exp2(std::round(std::log2(side))))
+            refuse("tiles", s.choice("tiles"), "each side must be 1, 0.5, 0.25 or 0.125 of the largest");
+    std::vector<AtlasTile> tiles = atlas_layout(count, sides);
+    const double smallest =
+        std::min_element(tiles.begin(), tiles.end(), [](auto& a, auto& b) { return a.side < b.side; })->side;
+    if (smallest < kMinTileSide)
+        refuse("tiles", s.choice("tiles"),
+               "more tiles than fit the atlas: the smallest would be 1/" + label_number(1 / smallest) +
+                   " of its side (at least 1/" + label_number(1 / kMinTileSide) + ")");
+    return tiles;
+}
+
 CascadeOptions read_options(const Settings& s, const Camera& camera) {
     const double count = s.number("count");
     if (count != std::round(count)) refuse("count", label_number(count), "expected a whole number");
@@ -71,6 +91,7 @@ CascadeOptions read_options(const Settings& s, const Camera& camera) {
     if (o.lispsm && o.stabilize) refuse("stabilize", "on", "a LiSPSM warp moves with the camera (use warp=none)");
     if (o.lispsm && o.by_tile) refuse("select", "tile", "tile bounds need the light-space boxes (use warp=none)");
     o.depths = split_depths(s, camera, o.count);
+    o.tiles = atlas_tiles(s, o.count);
     return o;
 }
 
@@ -126,7 +147,7 @@ Cascade build_cascade(const ShadowInputs& in, const CascadeOptions& o, BodyKerne
     c.ws_cover = c.part.body.empty() ? std::vector<glm::dvec3>(c.slice.corners.begin(), c.slice.corners.end())
                                      : c.part.body.vertices;
     if (o.fit == FitKind::sphere) c.sphere = slice_sphere(in.camera, c.near, c.far);
-    c.tile = atlas_tile(i, o.count);
+    c.tile = o.tiles[i];
     if (o.lispsm) {
         LispsmWarp warp = lispsm_warp({.ws_body = &c.ws_cover,
                                        .eye = in.camera.position,
@@ -311,20 +332,34 @@ std::vector<SettingSpec> cascades_settings() {
     SettingSpec splits{"splits", "manual: the inner split depths as increasing fractions of the depth range",
                        "0.05,0.2,0.5", 0.0, 1.0, {}};
     splits.is_list = true;
-    return {{"count", "cascades (maps in the atlas)", "4", 1.0, double(kMaxCascades), {}},
-            {"scheme", "split depths: PSSM's practical formula or the manual fractions", "practical", 0, 0,
-             {"practical", "manual"}},
-            {"lambda", "practical: λ, 1 logarithmic, 0 uniform", "0.5", 0.0, 1.0, {}},
-            splits,
-            {"far", "the shadow distance (depths beyond are lit); 0 = the camera's far", "0", 0.0, 1e12, {}, 1},
-            {"fit", "each map around its slice's body, from the near plane (scene), or the slice's sphere",
-             "cascade", 0, 0, {"cascade", "scene", "sphere"}},
-            {"stabilize", "snap each light box to whole texels (and quantize the sphere)", "off", 0, 0, {"on", "off"}},
-            {"warp", "none, or LiSPSM inside each split", "none", 0, 0, {"none", "lispsm"}},
-            {"blend", "the share of each split over which it crossfades into the next", "0", 0.0, 0.5, {}},
-            {"select", "a point's map: by view depth, or the first tile that holds it", "depth", 0, 0,
-             {"depth", "tile"}},
-            body_kernel_setting()};
+    SettingSpec tiles{
+        "tiles", "each cascade's tile side, 1, 0.5, 0.25 or 0.125 of the largest (its resolution); empty: equal",
+        "",      0.125,
+        1.0,     {}};
+    tiles.is_list = true;
+    return {
+        {"count", "cascades (maps in the atlas)", "4", 1.0, double(kMaxCascades), {}},
+        {"scheme",
+         "split depths: PSSM's practical formula or the manual fractions",
+         "practical",
+         0,
+         0,
+         {"practical", "manual"}},
+        {"lambda", "practical: λ, 1 logarithmic, 0 uniform", "0.5", 0.0, 1.0, {}},
+        splits,
+        {"far", "the shadow distance (depths beyond are lit); 0 = the camera's far", "0", 0.0, 1e12, {}, 1},
+        {"fit",
+         "each map around its slice's body, from the near plane (scene), or the slice's sphere",
+         "cascade",
+         0,
+         0,
+         {"cascade", "scene", "sphere"}},
+        {"stabilize", "snap each light box to whole texels (and quantize the sphere)", "off", 0, 0, {"on", "off"}},
+        {"warp", "none, or LiSPSM inside each split", "none", 0, 0, {"none", "lispsm"}},
+        {"blend", "the share of each split over which it crossfades into the next", "0", 0.0, 0.5, {}},
+        {"select", "a point's map: by view depth, or the first tile that holds it", "depth", 0, 0, {"depth", "tile"}},
+        tiles,
+        body_kernel_setting()};
 }
 
 }  // namespace shadowlab
