@@ -111,7 +111,9 @@ TEST(CascadeAtlas, TilesOfAnySidesFitWithoutOverlapAndAsLargeAsTheyCan) {
             const glm::dvec4 a = tile_viewport(tiles[i]);
             EXPECT_TRUE(a.x >= 0 && a.y >= 0 && a.z <= 1 && a.w <= 1) << n << " tile " << i;
             EXPECT_EQ(a * 512.0, glm::round(a * 512.0)) << "tile edges on texel boundaries";
-            if (!sides.empty()) EXPECT_EQ(tiles[i].side / tiles[0].side, sides[i] / sides[0]) << "the sides asked for";
+            if (!sides.empty()) {
+                EXPECT_EQ(tiles[i].side / tiles[0].side, sides[i] / sides[0]) << "the sides asked for";
+            }
             for (int j = 0; j < i; ++j) {
                 const glm::dvec4 b = tile_viewport(tiles[j]);
                 EXPECT_TRUE(a.x >= b.z || b.x >= a.z || a.y >= b.w || b.y >= a.w) << n << ": tiles " << i << ", " << j;
