@@ -12,6 +12,7 @@
 #include "measure_command.hpp"
 #include "registry/method.hpp"
 #include "reference/exact_shadows.hpp"
+#include "reference/visible_depths.hpp"
 #include "scene/image_size.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/tessellation.hpp"
@@ -89,8 +90,15 @@ void print_map(size_t i, const ShadowMap& map) {
     std::cout << name << " z_bias_scale: " << map.z_bias_scale << "\n";
 }
 
+// Visible depth bounds read a camera depth image of the window's default width.
+constexpr int kDepthImageSide = 640;
+
 void inspect_map(const InspectOptions& options, const Method& method, const Settings& settings, const Scene& scene) {
-    const ShadowInputs inputs = gather_inputs(scene);
+    ShadowInputs inputs = gather_inputs(scene);
+    if (method.wants_visible_depths(settings)) {
+        const glm::ivec2 image = image_size_within(scene.camera, kDepthImageSide, kDepthImageSide);
+        inputs.visible_depths = trace_receiver_depth_range(scene, tessellate(scene), image.x, image.y);
+    }
     Trace trace;
     const ShadowSetup setup = method.compute_maps(inputs, settings, &trace);
     if (options.json) {

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "geometry/intersection_body.hpp"
+#include "reference/visible_depths.hpp"
 #include "registry/method.hpp"
 #include "scene/scene.hpp"
 
@@ -38,13 +39,20 @@ Scene town(int count) {
     return scene;
 }
 
+constexpr glm::ivec2 kDepthImage{640, 360};
+
 void method_setup(benchmark::State& state, const Method* method, const std::map<std::string, std::string>& set,
                   bool traced) {
     const Scene scene = town(int(state.range(0)));
     const std::vector<ObjectBox> boxes = object_boxes(scene);
     const Settings settings = resolve_settings(method->name, method->settings, set);
+    // Visible depth bounds read the camera's depth image: traced once, as a renderer's depth pre-pass.
+    std::optional<DepthRange> visible_depths;
+    if (method->wants_visible_depths(settings))
+        visible_depths = trace_receiver_depth_range(scene, tessellate(scene), kDepthImage.x, kDepthImage.y);
     for (auto _ : state) {
-        const ShadowInputs inputs = gather_inputs(scene.camera, scene.light, boxes);
+        ShadowInputs inputs = gather_inputs(scene.camera, scene.light, boxes);
+        inputs.visible_depths = visible_depths;
         Trace trace;
         ShadowSetup setup = method->compute_maps(inputs, settings, traced ? &trace : nullptr);
         benchmark::DoNotOptimize(setup);

@@ -30,7 +30,8 @@ enum class FitKind { cascade, scene, sphere };
 // The settings, read and checked against each other and the camera.
 struct CascadeOptions {
     int count = 4;
-    std::vector<double> depths;  // count + 1 split depths, near to the shadow distance
+    bool visible_bounds = false;  // the depths split are the visible receivers' (bounds = visible, measured)
+    std::vector<double> depths;   // count + 1 split depths across the bounds
     FitKind fit = FitKind::cascade;
     bool stabilize = false;
     bool lispsm = false;
@@ -43,19 +44,40 @@ struct CascadeOptions {
     throw std::invalid_argument("method cascades: setting " + setting + "=" + value + ": " + why);
 }
 
-// The split depths from the camera's near plane to the shadow distance (`far`, 0: the camera's far).
-std::vector<double> split_depths(const Settings& s, const Camera& camera, int count) {
+// The depths the cascades cover: the camera's near plane to the shadow distance (`far`, 0: the
+// camera's far); with bounds = visible, narrowed to the receivers the camera's depth image shows
+// (SDSM), or a named fallback to the frustum's when there are none or no image was measured.
+DepthRange depth_bounds(const ShadowInputs& in, const Settings& s, std::vector<Note>& fallbacks) {
+    const Camera& camera = in.camera;
     const double shadow_distance = s.number("far") > 0.0 ? std::min(s.number("far"), camera.far) : camera.far;
     if (shadow_distance <= camera.near)
         refuse("far", label_number(s.number("far")), "below the camera's near plane " + label_number(camera.near));
-    if (s.choice("scheme") == "practical") return practical_splits(camera.near, shadow_distance, count, s.number("lambda"));
+    const DepthRange frustum{.near = camera.near, .far = shadow_distance};
+    if (!cascades_read_visible_depths(s)) return frustum;
+    const std::optional<DepthRange>& seen = in.visible_depths;
+    if (!seen) {
+        fallbacks.push_back({NoteKind::no_depth_image, "cascades from the camera's near plane to the shadow distance"});
+        return frustum;
+    }
+    const DepthRange visible{.near = std::max(seen->near, frustum.near), .far = std::min(seen->far, frustum.far)};
+    if (visible.empty()) {
+        fallbacks.push_back({NoteKind::no_visible_receiver,
+                             seen->empty() ? "the camera sees none" : "none nearer than the shadow distance"});
+        return frustum;
+    }
+    return visible;
+}
+
+// The split depths across the bounds: PSSM's practical scheme, or the manual fractions.
+std::vector<double> split_depths(const Settings& s, const DepthRange& bounds, int count) {
+    if (s.choice("scheme") == "practical") return practical_splits(bounds.near, bounds.far, count, s.number("lambda"));
     const std::vector<double> fractions = s.numbers("splits");
     if (int(fractions.size()) != count - 1)
         refuse("splits", s.choice("splits"), std::to_string(count - 1) + " fractions needed for count=" + std::to_string(count));
     for (size_t i = 0; i < fractions.size(); ++i)
         if (!(fractions[i] > (i == 0 ? 0.0 : fractions[i - 1]) && fractions[i] < 1.0))
             refuse("splits", s.choice("splits"), "fractions of the depth range must increase within (0, 1)");
-    return manual_splits(camera.near, shadow_distance, fractions);
+    return manual_splits(bounds.near, bounds.far, fractions);
 }
 
 // The atlas: tiles of the relative sides asked for (the resolution per cascade), none below the smallest.
@@ -76,7 +98,7 @@ std::vector<AtlasTile> atlas_tiles(const Settings& s, int count) {
     return tiles;
 }
 
-CascadeOptions read_options(const Settings& s, const Camera& camera) {
+CascadeOptions read_options(const Settings& s, const ShadowInputs& in, std::vector<Note>& fallbacks) {
     const double count = s.number("count");
     if (count != std::round(count)) refuse("count", label_number(count), "expected a whole number");
     CascadeOptions o{.count = int(count),
@@ -90,7 +112,10 @@ CascadeOptions read_options(const Settings& s, const Camera& camera) {
     // A warp follows the camera: there is no still box to snap, nor one whose bounds a tile test could read.
     if (o.lispsm && o.stabilize) refuse("stabilize", "on", "a LiSPSM warp moves with the camera (use warp=none)");
     if (o.lispsm && o.by_tile) refuse("select", "tile", "tile bounds need the light-space boxes (use warp=none)");
-    o.depths = split_depths(s, camera, o.count);
+    const size_t fallbacks_before = fallbacks.size();
+    const DepthRange bounds = depth_bounds(in, s, fallbacks);
+    o.visible_bounds = cascades_read_visible_depths(s) && fallbacks.size() == fallbacks_before;
+    o.depths = split_depths(s, bounds, o.count);
     o.tiles = atlas_tiles(s, o.count);
     return o;
 }
@@ -182,6 +207,26 @@ std::vector<glm::dvec4> depth_face(const Camera& camera, double depth) {
     const Frustum f = depth_slice(camera, depth, 2 * depth);
     return {glm::dvec4(f.corners[0], 1), glm::dvec4(f.corners[1], 1), glm::dvec4(f.corners[2], 1),
             glm::dvec4(f.corners[3], 1)};
+}
+
+// SDSM's bounds: the frustum's depth range against the part of it the camera sees receivers in.
+void record_visible_bounds(Trace& t, const ShadowInputs& in, const CascadeOptions& o) {
+    const double z_min = o.depths.front(), z_max = o.depths.back();
+    Step& step = t.add("cascade-bounds", "Visible depth bounds",
+                       "the nearest and farthest receiver in the camera's depth image (sample distribution shadow "
+                       "maps): the splits span these, not the frustum's near to far",
+                       Space::world)
+                     .value("z_min", z_min)
+                     .value("z_max", z_max)
+                     .value("frustum_near", in.camera.near)
+                     .value("frustum_far", in.camera.far)
+                     .shape("F", in.frustum, Role::view);
+    for (const auto& [name, depth] : {std::pair{"z_min", z_min}, std::pair{"z_max", z_max}}) {
+        const std::vector<glm::dvec4> face = depth_face(in.camera, depth);
+        step.shape(name, PolygonSet{}.add(face), Role::focus)
+            .shape(std::string(name) + " label",
+                   Label{glm::dvec3(face[3]), std::string(name) + " = " + label_number(depth)}, Role::focus);
+    }
 }
 
 void record_splits(Trace& t, const ShadowInputs& in, const Settings& s, const CascadeOptions& o) {
@@ -295,8 +340,8 @@ void record_selection(Trace& t, const ShadowInputs& in, const CascadeOptions& o,
 }  // namespace
 
 ShadowSetup compute_cascades(const ShadowInputs& in, const Settings& s, Trace* trace) {
-    const CascadeOptions o = read_options(s, in.camera);
     ShadowSetup setup;
+    const CascadeOptions o = read_options(s, in, setup.fallbacks);
     const auto body = start_warp("cascades", in, s, setup, trace);
     if (!body) return setup;
 
@@ -320,6 +365,7 @@ ShadowSetup compute_cascades(const ShadowInputs& in, const Settings& s, Trace* t
     record(trace, [&](Trace& t) {
         t.set_frame(Space::light, light_from_world);
         if (const auto& warp = cascades.front().warp) t.set_frame(Space::ppls, warp->ppls_from_light * light_from_world);
+        if (o.visible_bounds) record_visible_bounds(t, in, o);
         record_splits(t, in, s, o);
         for (int i = 0; i < o.count; ++i) record_cascade(t, light_from_world, cascades[i], i);
         record_selection(t, in, o, setup);
@@ -329,37 +375,67 @@ ShadowSetup compute_cascades(const ShadowInputs& in, const Settings& s, Trace* t
 }
 
 std::vector<SettingSpec> cascades_settings() {
-    SettingSpec splits{"splits", "manual: the inner split depths as increasing fractions of the depth range",
-                       "0.05,0.2,0.5", 0.0, 1.0, {}};
-    splits.is_list = true;
-    SettingSpec tiles{
-        "tiles", "each cascade's tile side, 1, 0.5, 0.25 or 0.125 of the largest (its resolution); empty: equal",
-        "",      0.125,
-        1.0,     {}};
-    tiles.is_list = true;
     return {
-        {"count", "cascades (maps in the atlas)", "4", 1.0, double(kMaxCascades), {}},
-        {"scheme",
-         "split depths: PSSM's practical formula or the manual fractions",
-         "practical",
-         0,
-         0,
-         {"practical", "manual"}},
-        {"lambda", "practical: λ, 1 logarithmic, 0 uniform", "0.5", 0.0, 1.0, {}},
-        splits,
-        {"far", "the shadow distance (depths beyond are lit); 0 = the camera's far", "0", 0.0, 1e12, {}, 1},
-        {"fit",
-         "each map around its slice's body, from the near plane (scene), or the slice's sphere",
-         "cascade",
-         0,
-         0,
-         {"cascade", "scene", "sphere"}},
-        {"stabilize", "snap each light box to whole texels (and quantize the sphere)", "off", 0, 0, {"on", "off"}},
-        {"warp", "none, or LiSPSM inside each split", "none", 0, 0, {"none", "lispsm"}},
-        {"blend", "the share of each split over which it crossfades into the next", "0", 0.0, 0.5, {}},
-        {"select", "a point's map: by view depth, or the first tile that holds it", "depth", 0, 0, {"depth", "tile"}},
-        tiles,
+        {.name = "count",
+         .description = "cascades (maps in the atlas)",
+         .default_value = "4",
+         .min = 1.0,
+         .max = double(kMaxCascades)},
+        {.name = "scheme",
+         .description = "split depths: PSSM's practical formula or the manual fractions",
+         .default_value = "practical",
+         .choices = {"practical", "manual"}},
+        {.name = "lambda",
+         .description = "practical: λ, 1 logarithmic, 0 uniform",
+         .default_value = "0.5",
+         .min = 0.0,
+         .max = 1.0},
+        {.name = "splits",
+         .description = "manual: the inner split depths as increasing fractions of the depth range",
+         .default_value = "0.05,0.2,0.5",
+         .min = 0.0,
+         .max = 1.0,
+         .is_list = true},
+        {.name = "far",
+         .description = "the shadow distance (depths beyond are lit); 0 = the camera's far",
+         .default_value = "0",
+         .min = 0.0,
+         .max = 1e12,
+         .length_power = 1},
+        {.name = "bounds",
+         .description = "the depths split: the camera's near to far, or the visible receivers' (its depth image)",
+         .default_value = "frustum",
+         .choices = {"frustum", "visible"}},
+        {.name = "fit",
+         .description = "each map around its slice's body, from the near plane (scene), or its sphere",
+         .default_value = "cascade",
+         .choices = {"cascade", "scene", "sphere"}},
+        {.name = "stabilize",
+         .description = "snap each light box to whole texels (and quantize the sphere)",
+         .default_value = "off",
+         .choices = {"on", "off"}},
+        {.name = "warp",
+         .description = "none, or LiSPSM inside each split",
+         .default_value = "none",
+         .choices = {"none", "lispsm"}},
+        {.name = "blend",
+         .description = "the share of each split over which it crossfades into the next",
+         .default_value = "0",
+         .min = 0.0,
+         .max = 0.5},
+        {.name = "select",
+         .description = "a point's map: by view depth, or the first tile that holds it",
+         .default_value = "depth",
+         .choices = {"depth", "tile"}},
+        {.name = "tiles",
+         .description = "each cascade's tile side, 1, 0.5, 0.25 or 0.125 of the largest (its resolution); empty: equal",
+         .default_value = "",
+         .min = 0.125,
+         .max = 1.0,
+         .is_list = true},
         body_kernel_setting()};
 }
+
+bool cascades_read_visible_depths(const Settings& s) { return s.choice("bounds") == "visible"; }
 
 }  // namespace shadowlab

@@ -9,5 +9,7 @@ namespace shadowlab {
 ShadowSetup compute_cascades(const ShadowInputs& inputs, const Settings& settings, Trace* trace);
 // cascades' settings, with their ranges and defaults.
 std::vector<SettingSpec> cascades_settings();
+// bounds = visible: the splits span the receivers the camera's depth image shows (visible_depths).
+bool cascades_read_visible_depths(const Settings& settings);
 
 }  // namespace shadowlab

@@ -59,7 +59,7 @@ std::vector<glm::dvec3> ShadowInputs::receiver_points() const { return corners_o
 std::vector<glm::dvec3> ShadowInputs::caster_points() const { return corners_of(casters); }
 
 ShadowInputs gather_inputs(const Camera& camera, const Light& light, const std::vector<ObjectBox>& objects) {
-    ShadowInputs in{camera, light, camera.frustum(), {}, {}, {}};
+    ShadowInputs in{camera, light, camera.frustum(), {}, {}, {}, {}};
     for (const ObjectBox& o : objects) in.scene_bounds.extend(o.box);
     in.scene_bounds = padded(in.scene_bounds);
     const double reach = in.scene_bounds.diagonal();

@@ -1,6 +1,8 @@
 #pragma once
 // What every method starts from: camera, light, the scene's bounds, and the boxes of the objects
-// that matter for this view (visible receivers, casters whose shadow can reach the view).
+// that matter for this view (visible receivers, casters whose shadow can reach the view); and, when
+// a method's settings ask for it, the view depths the camera actually sees on receivers.
+#include <optional>
 #include <vector>
 
 #include "geometry/aabb.hpp"
@@ -18,6 +20,13 @@ struct ObjectBox {
 
 std::vector<ObjectBox> object_boxes(const Scene& scene);
 
+// View depths (along the camera's axis) from near to far; empty when far <= near.
+struct DepthRange {
+    double near = 0.0, far = 0.0;
+
+    bool empty() const { return !(far > near); }
+};
+
 struct ShadowInputs {
     Camera camera;
     Light light;
@@ -25,6 +34,11 @@ struct ShadowInputs {
     Aabb scene_bounds;            // all objects, padded so that it is never flat
     std::vector<Aabb> receivers;  // `receives` and the box meets the view frustum
     std::vector<Aabb> casters;    // `casts` and the box's shadow can reach the view frustum
+    // The nearest and farthest receiver the camera's depth image shows (sample distribution shadow
+    // maps): measured only for a method whose settings read it (Method::wants_visible_depths), by
+    // the caller, who has the scene's triangles (reference/visible_depths.hpp); an empty range when
+    // no receiver is visible. None when not measured.
+    std::optional<DepthRange> visible_depths;
 
     std::vector<glm::dvec3> receiver_points() const;  // 8 corners per box
     std::vector<glm::dvec3> caster_points() const;

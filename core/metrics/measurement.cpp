@@ -4,18 +4,23 @@
 #include <cmath>
 
 #include "math/stopwatch.hpp"
+#include "reference/visible_depths.hpp"
 #include "scene/image_size.hpp"
 
 namespace shadowlab {
 namespace {
 
 // The setup, and the fastest of a few runs of it: a setup takes microseconds and the machine is noisy.
+// The visible depths, when the settings read them, are reduced from the reference's camera image
+// (its depth image) inside the timed run.
 ShadowSetup timed_setup(const MeasureContext& c, const Method& method, const Settings& settings, double& best_ms) {
     ShadowSetup setup;
     best_ms = INFINITY;
     for (int run = 0; run < 5; ++run) {
         const Stopwatch watch;
-        setup = method.compute_maps(gather_inputs(c.scene.camera, c.scene.light, c.boxes), settings, nullptr);
+        ShadowInputs inputs = gather_inputs(c.scene.camera, c.scene.light, c.boxes);
+        if (method.wants_visible_depths(settings)) inputs.visible_depths = receiver_depth_range(c.scene, c.reference);
+        setup = method.compute_maps(inputs, settings, nullptr);
         best_ms = std::min(best_ms, watch.ms());
     }
     return setup;

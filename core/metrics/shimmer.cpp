@@ -4,6 +4,7 @@
 
 #include "math/parallel_rows.hpp"
 #include "raster/depth_map.hpp"
+#include "reference/visible_depths.hpp"
 
 namespace shadowlab {
 namespace {
@@ -30,6 +31,20 @@ std::vector<signed char> verdicts(const MeasureContext& c, const std::vector<Shi
         }
     });
     return out;
+}
+
+// The frame's inputs; the visible depths, when the settings read them, from the frame's own depth
+// image at the reference's size (the camera moved: what it sees changed).
+ShadowInputs frame_inputs(const MeasureContext& c, const Method& method, const Settings& settings,
+                          const Camera& camera) {
+    ShadowInputs inputs = gather_inputs(camera, c.scene.light, c.boxes);
+    if (method.wants_visible_depths(settings)) {
+        Scene seen_from_frame = c.scene;
+        seen_from_frame.camera = camera;
+        inputs.visible_depths =
+            trace_receiver_depth_range(seen_from_frame, c.triangles, c.reference.width, c.reference.height);
+    }
+    return inputs;
 }
 
 }  // namespace
@@ -65,7 +80,7 @@ Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample
     std::vector<signed char> before;
     for (int frame = 0; frame < path.frames; ++frame) {
         const Camera camera = camera_at(c.scene.camera, path, frame);
-        const ShadowSetup setup = method.compute_maps(gather_inputs(camera, c.scene.light, c.boxes), settings, nullptr);
+        const ShadowSetup setup = method.compute_maps(frame_inputs(c, method, settings, camera), settings, nullptr);
         const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
         const std::vector<signed char> now = verdicts(c, samples, camera, setup, depth, resolution, bias);
         FrameShimmer f{.frame = frame, .fallbacks = setup.fallbacks};

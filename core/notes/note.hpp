@@ -23,6 +23,8 @@ enum class NoteKind {
     parallel_light,
     degenerate_centre_line,
     focus_out_of_range,
+    no_visible_receiver,
+    no_depth_image,
     // Limits of the geometric techniques (shadow volumes, planar projection).
     open_mesh,
     eye_in_volume,

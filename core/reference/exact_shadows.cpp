@@ -78,9 +78,10 @@ double facing_light(const Light& light, const std::array<glm::dvec3, 3>& triangl
     return glm::dot(normal, glm::normalize(to_light));
 }
 
-}  // namespace
+enum class ShadowRays { traced, skipped };
 
-ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height) {
+ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles, int width, int height,
+                            ShadowRays shadow_rays) {
     const Camera& camera = scene.camera;
     const glm::dvec3 origin = camera.position;  // the tracer's: the eye at 0
     const WorldTriangles local = rebased(triangles, origin);
@@ -106,6 +107,7 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
             image.position[i] = p;
             image.object[i] = triangles.object[hit->triangle];
             image.visible[i] = 1;
+            if (shadow_rays == ShadowRays::skipped) continue;
             image.lit[i] = sees_light(tracer, local_light, local_triangle, local_p);
             image.facing[i] = float(facing_light(scene.light, triangle, p, camera.position));
         }
@@ -114,6 +116,16 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
         for (int y = first; y < height; y += stride) trace_row(y);
     });
     return image;
+}
+
+}  // namespace
+
+ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height) {
+    return trace_camera(scene, triangles, width, height, ShadowRays::traced);
+}
+
+ReferenceImage visible_points(const Scene& scene, const WorldTriangles& triangles, int width, int height) {
+    return trace_camera(scene, triangles, width, height, ShadowRays::skipped);
 }
 
 }  // namespace shadowlab

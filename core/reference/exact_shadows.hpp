@@ -31,4 +31,8 @@ struct ReferenceImage {
 // from the light counts as lit: the test is occlusion, as a shadow map sees it, not shading.
 ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height);
 
+// The primary rays alone: the camera's depth image (position, object, visible), its lit and facing
+// left at 0. What sample-distribution bounds read (visible_depths.hpp), for a fraction of the cost.
+ReferenceImage visible_points(const Scene& scene, const WorldTriangles& triangles, int width, int height);
+
 }  // namespace shadowlab

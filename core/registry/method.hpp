@@ -43,6 +43,9 @@ using ComputeMaps = ShadowSetup (*)(const ShadowInputs& inputs, const Settings& 
 using ComputeGeometry = GeometryResult (*)(const Scene& scene, const WorldTriangles& triangles,
                                            const ReferenceImage& image, const Settings& settings, Trace* trace);
 
+// Whether a map method's settings read ShadowInputs::visible_depths (the camera's depth image).
+using ReadsVisibleDepths = bool (*)(const Settings& settings);
+
 struct Method {
     std::string name;         // as on the command line: "focused"
     std::string title;        // "Focused shadow map"
@@ -52,9 +55,12 @@ struct Method {
     Coverage covers = Coverage::visible_receivers;  // map methods
     ComputeMaps compute_maps = nullptr;          // a shadow-map method, or
     ComputeGeometry compute_geometry = nullptr;  // a geometric technique: exactly one is set
+    ReadsVisibleDepths reads_visible_depths = nullptr;  // a map method that may: when its settings say so
 
     Produces produces() const { return compute_maps ? Produces::maps : Produces::geometry; }
     bool makes_maps() const { return produces() == Produces::maps; }
+    // The caller measures the visible depths (a trace of the camera's view) for these settings only.
+    bool wants_visible_depths(const Settings& s) const { return reads_visible_depths && reads_visible_depths(s); }
 };
 
 // Every method, in the order the UI lists them: the shipped maps, the shipped geometric techniques,

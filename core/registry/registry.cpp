@@ -65,7 +65,8 @@ std::deque<Method>& registry() {
          .description = "Engel; Zhang et al.: the view split by depth, one map per split in an atlas",
          .settings = cascades_settings(),
          .lights = kDirectionalOnly,
-         .compute_maps = compute_cascades},
+         .compute_maps = compute_cascades,
+         .reads_visible_depths = cascades_read_visible_depths},
         {.name = "volumes",
          .title = "Stencil shadow volumes",
          .description = "Crow, Heidmann, Everitt and Kilgard: silhouette edges extruded to infinity, faces counted "

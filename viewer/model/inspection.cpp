@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "limits.hpp"
+#include "reference/visible_depths.hpp"
 
 namespace shadowlab {
 
@@ -45,17 +46,19 @@ Inspection inspect_scene(const Scene& scene, const InspectionRequest& request) {
     in.inputs = gather_inputs(scene);  // the frustum and the boxes the World view draws
     in.triangles = tessellate(scene);
     in.casters = caster_flags(scene);
+    in.image_width = request.image_width;
+    in.image_height = request.image_height > 0 ? request.image_height
+                                               : static_cast<int>(std::lround(in.image_width / scene.camera.aspect));
+    limits::check(limits::image_side, "camera image width", in.image_width);
+    limits::check(limits::image_side, "camera image height", in.image_height);
     if (method.makes_maps()) {
         limits::check(limits::map_resolution, "resolution", request.resolution);
         in.resolution = request.resolution;
+        if (method.wants_visible_depths(in.settings))
+            in.inputs.visible_depths = trace_receiver_depth_range(scene, in.triangles, in.image_width, in.image_height);
         in.setup = method.compute_maps(in.inputs, in.settings, &in.trace);
         in.depth = rasterize_depth(in.triangles, in.casters, in.setup, in.resolution);
     } else {
-        in.image_width = request.image_width;
-        in.image_height = request.image_height > 0 ? request.image_height
-                                                   : static_cast<int>(std::lround(in.image_width / scene.camera.aspect));
-        limits::check(limits::image_side, "camera image width", in.image_width);
-        limits::check(limits::image_side, "camera image height", in.image_height);
         in.geometry = method.compute_geometry(scene, in.triangles, in.reference(in.image_width, in.image_height),
                                               in.settings, &in.trace);
     }

@@ -24,7 +24,8 @@ struct InspectionRequest {
     std::map<std::string, std::string> settings;  // key -> text, checked against the method's specs
     int resolution = 1024;                        // map texture texels per side
     double bias = -1.0;                           // world units along the light; < 0: slope-scaled per pixel
-    int image_width = 640, image_height = 0;      // the camera image a technique judges (height 0: by aspect)
+    int image_width = 640, image_height = 0;      // the camera image a technique judges, and the depth image
+                                                  // visible depth bounds read (height 0: by aspect)
 };
 
 struct Inspection {
@@ -33,7 +34,7 @@ struct Inspection {
     Settings settings;
     int resolution = 0;   // maps: texture texels per side
     double bias = -1.0;   // world units along the light; < 0: slope-scaled per pixel (slope_scaled_bias)
-    int image_width = 0, image_height = 0;  // the camera image a geometric technique was judged on
+    int image_width = 0, image_height = 0;  // the camera image a technique was judged on, or the depth image read
     ShadowInputs inputs;
     Trace trace;
     WorldTriangles triangles;
