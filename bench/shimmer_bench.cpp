@@ -1,8 +1,11 @@
 // What a shimmer run costs against the measures it replaces: 60 frames of a sideways camera path
 // on the default scene at 640x360 (the method's maps built and rasterized per frame, every fixed
 // point judged), and one `measure` of the same method, resolution and image (the bound: the
-// run at most 60 measures).
+// run at most 60 measures). Cascades with visible depth bounds trace a depth image every frame.
 #include <benchmark/benchmark.h>
+
+#include <map>
+#include <string>
 
 #include "metrics/shimmer.hpp"
 #include "scene/scene_loader.hpp"
@@ -19,24 +22,36 @@ const MeasureContext& default_context() {
     return context;
 }
 
-Settings defaults(const Method& method) { return resolve_settings(method.name, method.settings, {}); }
+using SettingTexts = std::map<std::string, std::string>;
 
-void shimmer_run(benchmark::State& state, const std::string& method_name) {
+void shimmer_run(benchmark::State& state, const std::string& method_name, const SettingTexts& set) {
     const MeasureContext& c = default_context();
     const Method& method = method_or_throw(method_name);
+    const Settings settings = resolve_settings(method.name, method.settings, set);
     const std::vector<ShimmerSample> samples = shimmer_samples(c);
     const CameraPath path{CameraPath::Kind::translate, kFrames, 0.0};
     for (auto _ : state)
-        benchmark::DoNotOptimize(measure_shimmer(c, samples, method, defaults(method), kResolution, -1.0, path));
+        benchmark::DoNotOptimize(measure_shimmer(c, samples, method, settings, kResolution, -1.0, path));
 }
 
-void single_measure(benchmark::State& state, const std::string& method_name) {
+void single_measure(benchmark::State& state, const std::string& method_name, const SettingTexts& set) {
     const MeasureContext& c = default_context();
     const Method& method = method_or_throw(method_name);
-    for (auto _ : state) benchmark::DoNotOptimize(measure(c, method, defaults(method), kResolution, -1.0));
+    const Settings settings = resolve_settings(method.name, method.settings, set);
+    for (auto _ : state) benchmark::DoNotOptimize(measure(c, method, settings, kResolution, -1.0));
 }
 
 }  // namespace
 
-BENCHMARK_CAPTURE(shimmer_run, focused_60_frames, "focused")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(single_measure, focused, "focused")->Unit(benchmark::kMillisecond)->UseRealTime();
+const SettingTexts kVisibleBounds{{"bounds", "visible"}};
+
+BENCHMARK_CAPTURE(shimmer_run, focused_60_frames, "focused", {})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(single_measure, focused, "focused", {})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(shimmer_run, cascades_60_frames, "cascades", {})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(single_measure, cascades, "cascades", {})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(shimmer_run, cascades_visible_60_frames, "cascades", kVisibleBounds)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(single_measure, cascades_visible, "cascades", kVisibleBounds)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

@@ -48,6 +48,13 @@ x $shadowlab render data/scenes/default.json --method cascades --view shadowmap 
     --out $images/cascades_atlas.png
 x $shadowlab render data/scenes/box_on_plane.json --method cascades --view texels --resolution 128 --size 640x360 \
     --out $images/cascades_texels.png
+# Visible depth bounds against the frustum's with logarithmic splits, and a resolution per cascade.
+for bounds in frustum visible; do
+    x $shadowlab render data/scenes/default.json --method cascades --set lambda=1 --set bounds=$bounds --view camera \
+        --overlay cascade --size 640x360 --out $images/cascades_${bounds}_bounds.png
+done
+x $shadowlab render data/scenes/default.json --method cascades --set tiles=1,0.5,0.5,0.5 --view shadowmap \
+    --size 640x360 --out $images/cascades_tiles.png
 
 [[ ${1:-} == --views ]] && exit 0
 

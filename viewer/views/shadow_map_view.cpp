@@ -74,7 +74,8 @@ glm::dmat4 pixels_from_world(const ShadowMap& map, int n) {
 }
 
 // Each tile's border, its edges through the texel edges the viewport names, and a label inside its
-// top-left corner: "cascade 2: 1024²" for maps chosen by view depth, "map 2: 1024²" otherwise.
+// top-left corner on two lines, so that it fits a small tile: "cascade 2" (for maps chosen by view
+// depth; "map 2" otherwise) over "1024²".
 void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
     std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
     for (size_t i = 0; i < setup.maps.size(); ++i) {
@@ -83,11 +84,11 @@ void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
             d(tile.min.x, tile.max.y, 0.6);
         for (const auto& edge : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}}) edges.push_back(edge);
         const auto side = static_cast<int>(std::lround(tile_resolution(setup.maps[i], n)));
-        const std::string text = map_name(setup, i) + ": " + std::to_string(side) + "²";
+        const std::string text = map_name(setup, i) + "\n" + std::to_string(side) + "²";
         vtkNew<vtkBillboardTextActor3D> label;
         label->SetInput(text.c_str());
         label->SetPosition(d.x, d.y, d.z);
-        label->SetDisplayOffset(6, -22);  // inside the tile, below its top edge
+        label->SetDisplayOffset(6, -40);  // inside the tile, below its top edge
         style_overlay_text(label->GetTextProperty(), 14, kTileBorder);
         renderer->AddViewProp(label);
     }

@@ -83,12 +83,15 @@ TEST_P(GpuAgreesWithCpu, OnVisiblePixelsAwayFromShadowEdges) {
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuAgreesWithCpu, ::testing::Values("box_on_plane", "default", "spot"));
 
 // Cascades: four maps in an atlas, chosen by view depth and crossfaded over a blend band, or by
-// their tiles' bounds; the GPU selects, blends and looks up as the CPU does.
+// their tiles' bounds; tiles of two sizes; splits over the visible depths. The GPU selects, blends
+// and looks up as the CPU does.
 TEST(GpuAgreesWithCpuOnCascades, ByViewDepthWithABlendBandAndByTileBounds) {
     Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/default.json");
     scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
-    for (const std::map<std::string, std::string>& settings :
-         {std::map<std::string, std::string>{{"blend", "0.3"}}, std::map<std::string, std::string>{{"select", "tile"}}}) {
+    using SettingTexts = std::map<std::string, std::string>;
+    for (const SettingTexts& settings :
+         {SettingTexts{{"blend", "0.3"}}, SettingTexts{{"select", "tile"}}, SettingTexts{{"tiles", "1,0.5,0.5,0.25"}},
+          SettingTexts{{"bounds", "visible"}, {"lambda", "1"}}}) {
         InspectionRequest request{.method = "cascades", .settings = settings, .resolution = 2048};
         const Agreement a = gpu_against_cpu_lookup(inspect_scene(scene, request), kWidth, kHeight);
         ASSERT_EQ(a.undrawn, 0u);
