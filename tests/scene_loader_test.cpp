@@ -787,5 +787,51 @@ TEST(SceneCamera, FrustumAgreesWithTheMatrices) {
     EXPECT_LT(target.z, 0.0);  // right-handed: the camera looks down -z
 }
 
+// ---- a light's range, and a light inside a caster (issue 14) ----------------------------------
+
+TEST(SceneLoader, PointLightRangeIsReadAndChecked) {
+    json scene = minimal();
+    scene["light"] = {{"type", "point"}, {"position", {0, 5, 0}}, {"range", {0.5, 20}}};
+    const Scene read = parse_scene(scene.dump(), kFile);
+    ASSERT_TRUE(read.light.range.has_value());
+    EXPECT_EQ(read.light.range->near, 0.5);
+    EXPECT_EQ(read.light.range->far, 20.0);
+    scene["light"]["range"] = {3, 3};
+    expect_error(scene, "light.range[1]", "must be greater than near (3), got 3");
+    scene["light"]["range"] = {4, 2};
+    expect_error(scene, "light.range[1]", "must be greater than near (4), got 2");
+    scene["light"]["range"] = {0, 0};
+    expect_error(scene, "light.range", "expected two positive numbers, got [0, 0]");
+    scene["light"]["range"] = {1};
+    expect_error(scene, "light.range", "expected an array of two numbers");
+    scene["light"] = {{"type", "directional"}, {"range", {1, 2}}};
+    expect_error(scene, "light.range", "allowed for a directional light: type, direction");
+}
+
+// Inside a box, a sphere, a cylinder (each turned and scaled) or a closed mesh, the light is
+// refused by name; beside them, or inside an object that casts nothing, it is not.
+TEST(SceneLoader, ALightInsideACasterIsRefused) {
+    const auto scene_with = [](const json& object, const json& light_position) {
+        json scene = minimal();
+        scene["light"] = {{"type", "point"}, {"position", light_position}};
+        scene["objects"] = json::array({{{"type", "plane"}, {"size", {40, 40}}}, object});
+        return scene;
+    };
+    const json box = {{"type", "box"}, {"position", {2, 1, 0}}, {"rotation", {0, 45, 0}}, {"size", {2, 2, 4}}};
+    const json sphere = {{"type", "sphere"}, {"position", {0, 3, 0}}, {"radius", 1}, {"scale", {1, 2, 1}}};
+    const json cylinder = {{"type", "cylinder"}, {"position", {0, 1, 0}}, {"radius", 0.5}, {"height", 2}};
+    const json mesh = {{"type", "mesh"}, {"file", source_path("data/meshes/tetrahedron.obj").string()}, {"scale", 3}};
+    for (const auto& [object, inside, outside] : {std::tuple{box, json{2.5, 1.0, 1.2}, json{3.9, 1.0, 0.0}},
+                                                  std::tuple{sphere, json{0, 4.8, 0}, json{0.9, 4.8, 0}},
+                                                  std::tuple{cylinder, json{0.3, 1.9, 0.3}, json{0.4, 1.0, 0.4}},
+                                                  std::tuple{mesh, json{0.0, 0.3, 0.0}, json{5.0, 0.3, 0.0}}}) {
+        expect_error(scene_with(object, inside), "light.position", "inside the caster objects[1]");
+        EXPECT_NO_THROW(parse_scene(scene_with(object, outside).dump(), kFile)) << object.dump();
+        json not_casting = object;
+        not_casting["casts"] = false;
+        EXPECT_NO_THROW(parse_scene(scene_with(not_casting, inside).dump(), kFile)) << object.dump();
+    }
+}
+
 }  // namespace
 }  // namespace shadowlab

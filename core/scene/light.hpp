@@ -1,10 +1,17 @@
 #pragma once
 // The one light of a scene.
+#include <optional>
 #include <glm/glm.hpp>
 
 namespace shadowlab {
 
 enum class LightType { directional, spot, point };
+
+// The distances from a spot or point light its map's depth spans: nothing nearer casts, nothing
+// farther is lit (a lamp's reach). 0 < near < far.
+struct LightRange {
+    double near = 0.0, far = 0.0;
+};
 
 const char* to_string(LightType type);
 
@@ -13,6 +20,7 @@ struct Light {
     glm::dvec3 direction{-0.3, -1.0, -0.2};  // unit; the way the light travels (directional, spot)
     glm::dvec3 position{0.0, 10.0, 0.0};     // spot and point lights
     double cone_deg = 60.0;                  // spot: full apex angle of the cone
+    std::optional<LightRange> range;         // spot and point; none: the maps fit the scene's distances
 
     bool is_directional() const { return type == LightType::directional; }
     // The light as a homogeneous point: (position, 1), or (-direction, 0) at infinity.

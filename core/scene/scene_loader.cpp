@@ -8,7 +8,8 @@
 //   "light":   {"type": "directional" | "spot" | "point",         // required object
 //               "direction": [x,y,z],                            // directional, spot
 //               "position": [x,y,z],                             // spot, point
-//               "cone_deg": 60},                                 // spot: full apex angle
+//               "cone_deg": 60,                                  // spot: full apex angle
+//               "range": [near, far]},                           // spot, point: the distances lit
 //   "objects": [                                                 // required, non-empty
 //     {"type": "box" | "sphere" | "plane" | "cylinder" | "mesh", "name": "<type>_<index>",
 //      "position": [x,y,z], "rotation": [degrees about x, y, z], "scale": [x,y,z] or s,
@@ -20,7 +21,8 @@
 // within ±1e12, and so every corner of a placed object; sizes, radius, height, near and far in
 // [1e-6, 1e12]; scale in [1e-6, 1e6]; aspect in [1e-3, 1e3]; near < far <= 1e9 near; fov_y_deg and
 // cone_deg in (0, 180); directions non-zero (normalised after loading); camera target != position
-// and up not parallel to the view direction.
+// and up not parallel to the view direction; a light range 0 < near < far within [1e-6, 1e12]; a
+// spot or point light outside every caster (a map from inside a box sees only the box).
 #include "scene/scene_loader.hpp"
 
 #include <algorithm>
@@ -171,8 +173,10 @@ json parse_json(const std::string& text, const std::string& file) {
 std::vector<std::string> light_keys(LightType type) {
     switch (type) {
         case LightType::directional: return {"type", "direction"};
-        case LightType::spot: return {"type", "direction", "position", "cone_deg"};
-        case LightType::point: return {"type", "position"};
+        case LightType::spot:
+            return {"type", "direction", "position", "cone_deg", "range"};
+        case LightType::point:
+            return {"type", "position", "range"};
     }
     return {};
 }
@@ -314,6 +318,10 @@ private:
         read_field(value, path, "direction", light.direction);
         read_field(value, path, "position", light.position);
         read_field(value, path, "cone_deg", light.cone_deg);
+        if (const json* range = find_field(value, "range")) {
+            const std::vector<double> near_far = numbers(*range, path + ".range", 2);
+            light.range = LightRange{.near = near_far[0], .far = near_far[1]};
+        }
         return light;
     }
 
@@ -397,6 +405,7 @@ public:
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             check_object(scene.objects[i], "objects[" + std::to_string(i) + "]");
         check_mesh_triangles(scene);
+        check_light_outside_casters(scene);
     }
 
 private:
@@ -484,6 +493,23 @@ private:
         if (light.type != LightType::point) direction(light.direction, "light.direction");
         if (light.type != LightType::directional) coordinates(light.position, "light.position");
         if (light.type == LightType::spot) angle(light.cone_deg, "light.cone_deg");
+        if (light.range) {
+            positive({light.range->near, light.range->far}, "light.range", limits::length);
+            if (!(light.range->far > light.range->near))
+                fail("light.range[1]", "must be greater than near (" + format_number(light.range->near) + "), got " +
+                                           format_number(light.range->far));
+        }
+    }
+
+    // A spot or point light inside a caster sees only that caster's inside: every map is black.
+    void check_light_outside_casters(const Scene& scene) const {
+        if (scene.light.is_directional()) return;
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            const SceneObject& object = scene.objects[i];
+            if (object.casts && object.contains(scene.light.position))
+                fail("light.position", "inside the caster objects[" + std::to_string(i) + "] (" + object.name +
+                                           "): its map would see nothing but that object");
+        }
     }
 
     // Only the fields the object's shape uses.

@@ -30,6 +30,9 @@ struct SceneObject {
     glm::dmat4 model_matrix() const;  // local -> world: T * Rz * Ry * Rx * S
     Aabb local_bounds() const;        // a plane is flat: zero extent in y
     Aabb world_bounds() const;
+    // Whether a world point lies inside the solid: exact for the primitives, by the parity of a
+    // ray's crossings for a mesh (closed meshes); a plane has no inside.
+    bool contains(const glm::dvec3& world) const;
 };
 
 }  // namespace shadowlab

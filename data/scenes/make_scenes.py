@@ -246,8 +246,44 @@ def volumes_eye_in_shadow(rng):
         objects, 60)
 
 
+def lamp_room(rng):
+    """A bare bulb in a 10 x 3 x 10 room: furniture below it, beside it on every side and a beam
+    above it, so that every direction from the light holds a caster (omnidirectional maps: dpsm,
+    cube). Long straight edges near the light show how a paraboloid bends them."""
+    def box(name, position, size, rotation=0):
+        return {"type": "box", "name": name, "position": vec(*position), "rotation": vec(0, rotation, 0),
+                "size": vec(*size)}
+
+    def wall(name, position, size):
+        return {**box(name, position, size), "casts": False}
+
+    objects = [
+        wall("ceiling", (0, 3.05, 0), (10, 0.1, 10)),
+        wall("wall_west", (-5.05, 1.5, 0), (0.1, 3, 10)),
+        wall("wall_east", (5.05, 1.5, 0), (0.1, 3, 10)),
+        wall("wall_north", (0, 1.5, -5.05), (10, 3, 0.1)),
+        wall("wall_south", (0, 1.5, 5.05), (10, 3, 0.1)),
+        box("table", (0.4, 0.72, 0.3), (2.2, 0.08, 1.2), 15),
+        box("table_leg_1", (-0.5, 0.34, -0.1), (0.08, 0.68, 0.08), 15),
+        box("table_leg_2", (1.3, 0.34, 0.7), (0.08, 0.68, 0.08), 15),
+        box("shelf", (-4.3, 1.1, -0.5), (0.6, 2.2, 2.4)),
+        box("cabinet", (3.6, 0.6, -1.8), (1.2, 1.2, 0.6), -20),
+        box("chair_seat", (-0.9, 0.45, 1.4), (0.5, 0.06, 0.5), 30),
+        box("chair_back", (-1.1, 0.8, 1.6), (0.5, 0.7, 0.06), 30),
+        box("beam", (0, 2.7, 0), (9.8, 0.2, 0.25)),
+        box("pillar", (1.8, 1.5, -3.2), (0.4, 3, 0.4)),
+        {"type": "sphere", "name": "globe", "position": vec(2.6, 1.7, 1.6), "radius": 0.3},
+        {"type": "cylinder", "name": "vase", "position": vec(-0.2, 0.96, 0.5), "radius": 0.1, "height": 0.4},
+    ]
+    return scene(
+        "lamp_room", "A bare bulb in a room: casters on every side of a point light (dpsm, cube).",
+        camera((4.4, 2.4, 4.4), (-0.62, -0.33, -0.71), fov=70, near=0.05, far=20),
+        {"type": "point", "position": [0, 2.1, 0], "range": [0.05, 12]},
+        objects, 10)
+
+
 SCENES = [default, light_parallel_behind, light_parallel_front, casters_behind, light_overhead,
-          far_near_1e5, box_on_plane, spot, point, volumes, volumes_eye_in_shadow]
+          far_near_1e5, box_on_plane, spot, point, volumes, volumes_eye_in_shadow, lamp_room]
 
 
 def write(data, path):
