@@ -28,13 +28,6 @@ namespace {
 // by the local coordinates' floating-point precision, not by the scene's extent).
 constexpr double kOffsetUlps = 64.0;
 
-// The scene as the tracer sees it: every vertex relative to `origin`.
-WorldTriangles rebased(const WorldTriangles& triangles, const glm::dvec3& origin) {
-    WorldTriangles out = triangles;
-    for (glm::dvec3& v : out.vertices) v -= origin;
-    return out;
-}
-
 std::array<glm::dvec3, 3> corners(const WorldTriangles& triangles, int triangle) {
     const std::array<int, 3>& t = triangles.triangles[triangle];
     return {triangles.vertices[t[0]], triangles.vertices[t[1]], triangles.vertices[t[2]]};
@@ -84,7 +77,7 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
                             ShadowRays shadow_rays) {
     const Camera& camera = scene.camera;
     const glm::dvec3 origin = camera.position;  // the tracer's: the eye at 0
-    const WorldTriangles local = rebased(triangles, origin);
+    const WorldTriangles local = relative_to(triangles, origin);
     const RayTracer tracer(local, caster_flags(scene));
     Light local_light = scene.light;
     local_light.position -= origin;

@@ -121,4 +121,9 @@ std::vector<bool> caster_flags(const Scene& scene) {
     return flags;
 }
 
+WorldTriangles relative_to(WorldTriangles triangles, const glm::dvec3& origin) {
+    for (glm::dvec3& v : triangles.vertices) v -= origin;
+    return triangles;
+}
+
 }  // namespace shadowlab

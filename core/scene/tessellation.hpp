@@ -19,6 +19,10 @@ struct WorldTriangles {
 // quads and two fan caps, a mesh its own triangles (as wound in its file).
 WorldTriangles tessellate(const Scene& scene, int segments = 24);
 
+// The triangles with every vertex moved by -origin: relative to a light or the eye, as float32
+// consumers (Embree, the GPU) need them far from the world's origin.
+WorldTriangles relative_to(WorldTriangles triangles, const glm::dvec3& origin);
+
 // Per object: does it cast shadows (SceneObject::casts)? Indexed like WorldTriangles::object.
 std::vector<bool> caster_flags(const Scene& scene);
 
