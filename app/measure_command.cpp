@@ -31,21 +31,24 @@ Json to_json(const MapBreakdown& b) {
 Json to_json(const Measurement& m) {
     const ShadowError& e = m.error;
     Json out = {{"method", m.method},
-            {"resolution", m.resolution},
-            {"misclassified", e.misclassified},
-            {"false_shadow", e.false_shadow},
-            {"false_light", e.false_light},
-            {"m", to_json(e.m)},
-            {"m_perspective", to_json(e.m_perspective)},
-            {"m_projection", to_json(e.m_projection)},
-            {"depth_step", to_json(e.depth_step)},
-            {"setup_ms", m.setup_ms},
-            {"raster_ms", m.raster_ms},
-            {"fallback", m.fallbacks.empty() ? Json(nullptr) : Json(describe(m.fallbacks))},
-            {"fallbacks", to_json(m.fallbacks)},
-            {"limits", to_json(m.limits)},
-            {"bias", m.geometry ? Json(nullptr) : m.bias >= 0.0 ? Json(m.bias) : Json("slope-scaled")},
-            {"receiver_pixels", e.receiver_pixels}};
+                {"resolution", m.resolution},
+                {"texels_used", m.texels_used},
+                {"misclassified", e.misclassified},
+                {"false_shadow", e.false_shadow},
+                {"false_light", e.false_light},
+                {"m", to_json(e.m)},
+                {"m_perspective", to_json(e.m_perspective)},
+                {"m_projection", to_json(e.m_projection)},
+                {"depth_step", to_json(e.depth_step)},
+                {"setup_ms", m.setup_ms},
+                {"raster_ms", m.raster_ms},
+                {"fallback", m.fallbacks.empty() ? Json(nullptr) : Json(describe(m.fallbacks))},
+                {"fallbacks", to_json(m.fallbacks)},
+                {"limits", to_json(m.limits)},
+                {"bias", m.geometry      ? Json(nullptr)
+                         : m.bias >= 0.0 ? Json(m.bias)
+                                         : Json("slope-scaled")},
+                {"receiver_pixels", e.receiver_pixels}};
     if (m.by_map) {
         out["per_map"] = to_json(*m.by_map);
         out["seam_share"] = m.by_map->seam_share();  // of the misclassified pixels, near a boundary between maps
@@ -94,6 +97,9 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
         std::cout << "  seams: " << 100 * m.by_map->seam_share() << "% of the misclassified pixels lie within "
                   << kSeamPixels << " pixels of a boundary between maps\n";
     }
+    if (m.texels_used > 0.0)
+        std::cout << "  texels: " << m.texels_used << " in the maps' tiles, of " << double(m.resolution) * m.resolution
+                  << " in the texture\n";
     std::cout << "  cost: setup " << m.setup_ms << " ms, raster " << m.raster_ms << " ms, total "
               << m.setup_ms + m.raster_ms << " ms\n";
     if (m.geometry)

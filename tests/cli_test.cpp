@@ -164,6 +164,7 @@ TEST(Cli, MeasurePrintsTheDocumentedObject) {
     const nlohmann::json j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["method"], "lispsm");
     EXPECT_EQ(j["resolution"], 1024);
+    EXPECT_EQ(j["texels_used"], 1024.0 * 1024.0) << "one map fills the texture";
     for (const char* share : {"misclassified", "false_shadow", "false_light"}) {
         EXPECT_GE(j[share].get<double>(), 0.0) << share;
         EXPECT_LE(j[share].get<double>(), 1.0) << share;

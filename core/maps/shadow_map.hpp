@@ -34,6 +34,10 @@ struct ShadowMap {
     // Pre-division depth offset per world unit of bias along the light (XPSM step 18):
     // d' = (d_pre - z_bias_scale * bias) / w.
     double z_bias_scale = 1.0;
+    // paraboloid only: the casters' triangles are split until no projected edge bows more than this
+    // many texels from its straight chord (a GPU joins projected vertices by straight edges, while the
+    // true image of a straight edge is a curve); 0: drawn as given.
+    double max_sagitta_texels = 0.0;
 };
 
 // How a world point picks its map among several.

@@ -88,15 +88,18 @@ PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
     else if (outside_cone > 0)
         fit.fallback = Note{NoteKind::outside_cone, std::to_string(outside_cone) + " clamped to the cone"};
 
-    const Aabb& b = fit.light_box;
+    fit.map = perspective_map_of(fit.light_from_world, fit.light_box);
+    return fit;
+}
+
+ShadowMap perspective_map_of(const glm::dmat4& light_from_world, const Aabb& tangent_box) {
+    const Aabb& b = tangent_box;
     const glm::dvec3 e = safe_extent(b);
     const double n = b.min.z, f = std::max(b.max.z, n * (1 + 1e-9));
     // u = (x/z - t0) / extent, d = f (z - n) / ((f - n) z): depth grows with distance.
     const glm::dmat4 uvz_from_light = from_rows({1 / e.x, 0, -b.min.x / e.x, 0}, {0, 1 / e.y, -b.min.y / e.y, 0},
                                                 {0, 0, f / (f - n), -f * n / (f - n)}, {0, 0, 1, 0});
-    fit.map.world_to_uvz = uvz_from_light * fit.light_from_world;
-    fit.map.z_bias_scale = f / (f - n);
-    return fit;
+    return {.world_to_uvz = uvz_from_light * light_from_world, .z_bias_scale = f / (f - n)};
 }
 
 }  // namespace shadowlab

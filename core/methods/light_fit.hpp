@@ -55,4 +55,9 @@ struct PerspectiveFit {
 PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
                                const std::vector<glm::dvec3>& points, double max_half_angle_deg);
 
+// The perspective map of a light-space frustum given as tangent bounds (x/z, y/z in min.xy..max.xy)
+// and distances along z (near min.z, far max.z): u, v the tangents across the bounds, depth
+// f (z - n) / ((f - n) z), growing with distance.
+ShadowMap perspective_map_of(const glm::dmat4& light_from_world, const Aabb& tangent_box);
+
 }  // namespace shadowlab

@@ -17,12 +17,14 @@ std::vector<SettingSpec> lispsm_settings();
 // no warp (n = ∞), η = 0 LiSPSM's n_opt = (z_n + sqrt(z_n z_f)) / sin γ, η = 1 PSM's n = z_n / sin γ.
 double lispsm_n(double z_n, double z_f, double sin_gamma, double eta);
 
-// What LiSPSM warps: a body (world points) seen by an eye whose view range starts at z_n, under a
-// directional light. `n` overrides n_opt when positive.
+// What LiSPSM warps: a body (world points, or points of a spot light's post-perspective space, where
+// its rays are parallel) seen by an eye whose view range starts at z_n, under a directional light.
+// `z_f`, when positive, is the eye's depth of the body's far end (else z_n + depth(B) sin γ, as for a
+// directional light in the world); `n` overrides n_opt when positive.
 struct LispsmRequest {
     const std::vector<glm::dvec3>* ws_body;
     glm::dvec3 eye, view_direction, light_direction;
-    double z_n = 0.0, eta = 0.0, n = 0.0;
+    double z_n = 0.0, eta = 0.0, n = 0.0, z_f = 0.0;
 };
 
 // LiSPSM's construction for one body, each quantity its steps show; `warps` is false when the warp

@@ -1,7 +1,10 @@
 // Perspective Shadow Maps (Stamminger and Drettakis 2002) with Kozlov's remedies ("Perspective
 // shadow maps: care and feeding", GPU Gems 2004). The map is built in the camera's post-perspective
 // space (PPS), where the directional light becomes a point light (or stays directional when it is
-// perpendicular to the view).
+// perpendicular to the view). A spot or point light goes through P V like any point (Stamminger and
+// Drettakis's recipe takes the light's homogeneous position): a point light there, directional on the
+// virtual camera's plane w = 0, and with its depth order inverted behind it, as Kozlov's directional
+// light behind the viewer has.
 #include "methods/psm.hpp"
 
 #include <algorithm>
@@ -61,17 +64,34 @@ ShadowMap pps_orthographic(const glm::dvec3& pps_direction, const std::vector<gl
     return map;
 }
 
+// The PPS light's fit redone to reach the points of `pps_within` (the body within its frustum) that lie
+// past its far end (past its near end when inverted: depth then runs the other way): visible points
+// beyond a spot's cone that the map's square takes in. The fit stays when none does, or when the
+// refit would need a fallback.
+PerspectiveFit reaching_past_far(const PerspectiveFit& fit, const Light& pps_light, const glm::dvec3& axis,
+                                 std::vector<glm::dvec3> pps_points, const std::vector<glm::dvec3>& pps_within,
+                                 bool inverted) {
+    const size_t fitted = pps_points.size();
+    for (const glm::dvec3& p : pps_within) {
+        const double z = transform_point(fit.light_from_world, p).z;
+        if (inverted ? z < fit.light_box.min.z : z > fit.light_box.max.z) pps_points.push_back(p);
+    }
+    if (pps_points.size() == fitted) return fit;
+    PerspectiveFit reaching = perspective_map(pps_light, axis, pps_points, kMaxHalfAngleDeg);
+    return reaching.fallback ? fit : reaching;
+}
+
 }  // namespace
 
 ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace) {
     ShadowSetup setup;
-    const auto body = start_warp("psm", in, s, setup, trace);
-    if (!body) return setup;
-    const std::vector<glm::dvec3>& ws_body = body->body.vertices;
+    const auto region = start_warp_in_reach(in, s, setup, trace);
+    if (!region) return setup;
+    const std::vector<glm::dvec3>& ws_body = region->ws_points;  // B, or a spot light's reach of B
 
     const VirtualCamera camera = slid_back_camera(in.camera, ws_body);
     const ProjectedPoints pps_body = project(ws_body, camera.pps_from_world, 0.0);
-    // The light in PPS (homogeneous): the image of the point at infinity it comes from.
+    // The light in PPS (homogeneous): the image of its position, or of the point at infinity it comes from.
     const glm::dvec4 pps_light = camera.pps_from_world * in.light.homogeneous();
     const double w_ratio = pps_light.w / glm::length(glm::dvec3(pps_light));
     record(trace, [&](Trace& t) {
@@ -99,9 +119,11 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
         t.set_frame(Space::view, glm::lookAt(camera.eye, camera.eye + in.camera.view_direction(), in.camera.up));
         t.set_frame(Space::ppls, camera.pps_from_world);
         Step& light = t.add("psm-light", "Light in PPS",
-                            "L' = P V (-L, 0): w ≈ 0 directional, w > 0 a point light, w < 0 behind the viewer",
+                            "L' = P V L, L = (-dir, 0) or (position, 1): w ≈ 0 directional, w > 0 a point light, "
+                            "w < 0 behind the viewer",
                             Space::ppls)
-                          .value("L_pps", pps_light).value("w_over_length", w_ratio);
+                          .value("L_pps", pps_light)
+                          .value("w_over_length", w_ratio);
         const glm::dvec3 pps_centre = bounds_of(pps_body.points).center();
         if (std::abs(w_ratio) < 1e-9) {  // still directional: L' as an arrow arriving at the body
             draw_arrow(light, "L'", pps_centre + glm::normalize(glm::dvec3(pps_light)), -glm::dvec3(pps_light), 1.0,
@@ -138,21 +160,28 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
         pps_point_light.position = glm::dvec3(pps_light) / pps_light.w;
         glm::dvec3 pps_centre{0.0};
         for (const glm::dvec3& p : pps_body.points) pps_centre += p / double(pps_body.points.size());
-        const PerspectiveFit fit =
-            perspective_map(pps_point_light, glm::normalize(pps_centre - pps_point_light.position), pps_body.points,
-                            kMaxHalfAngleDeg);
-        const glm::dmat4& light_from_pps = fit.light_from_world;  // perspective_map was given PPS for its world
+        const glm::dvec3 axis = glm::normalize(pps_centre - pps_point_light.position);
+        PerspectiveFit fit = perspective_map(pps_point_light, axis, pps_body.points, kMaxHalfAngleDeg);
         if (fit.fallback) {
-            fall_back_to_focused(Note{NoteKind::parallel_light,
-                                                 "the PPS light lies on the region to cover (" + describe(*fit.fallback) +
-                                                     "); focused map used"},
-                                 in, *body, setup, trace);
+            // A directional light's image reaches the region only when it nearly runs along the view; a spot
+            // or point light's when it stands in or beside what it must cover.
+            const NoteKind kind = in.light.is_directional() ? NoteKind::parallel_light : NoteKind::light_on_region;
+            fall_back_to_focused(Note{kind, "the PPS light lies on the region to cover (" + describe(*fit.fallback) +
+                                                "); focused map used"},
+                                 in, region->body, setup, trace);
             return setup;
         }
-        map = fit.map;
         // Kozlov's second remedy: a light behind the viewer is a sink in PPS; its rays run toward
         // the PPS light, so depth grows toward it (the inverted projection): d' = 1 - d.
         const bool inverted = pps_light.w < 0.0;
+        if (!in.light.is_directional()) {
+            const std::vector<glm::dvec3> ws_within =
+                body_within_frustum(region->body.body, fit.map.world_to_uvz * camera.pps_from_world, in.light.position);
+            fit = reaching_past_far(fit, pps_point_light, axis, pps_body.points,
+                                    project(ws_within, camera.pps_from_world, 0.0).points, inverted);
+        }
+        const glm::dmat4& light_from_pps = fit.light_from_world;  // perspective_map was given PPS for its world
+        map = fit.map;
         glm::dmat4 uvz_from_pps = fit.map.world_to_uvz;  // likewise: its map takes PPS to uvz
         if (inverted) uvz_from_pps = from_rows({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, -1, 1}, {0, 0, 0, 1}) * uvz_from_pps;
         map.world_to_uvz = uvz_from_pps * camera.pps_from_world;
@@ -174,7 +203,8 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
         });
     }
     // Bias in world units along the light, exact at the centre of the visible region.
-    map.z_bias_scale = depth_slope_along(map.world_to_uvz, in.light.direction, body->visible.centroid());
+    const glm::dvec3 visible_centre = region->body.visible.centroid();
+    map.z_bias_scale = depth_slope_along(map.world_to_uvz, light_ray_at(in.light, visible_centre), visible_centre);
     setup.maps.push_back(map);
     record_output(setup, ws_body, trace);
     return setup;

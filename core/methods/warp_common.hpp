@@ -1,6 +1,7 @@
 #pragma once
 // What the perspective warps (PSM, LiSPSM, TSM, XPSM) share: the intersection body, the fallbacks
-// taken before any warp is computed, and point sets clipped to the region that matters.
+// taken before any warp is computed, and point sets clipped to the region that matters (for a spot
+// light, the part of the body its cone reaches).
 #include <optional>
 #include <vector>
 
@@ -14,6 +15,32 @@ namespace shadowlab {
 // (nothing visible: uniform map).
 std::optional<IntersectionBody> start_warp(const std::string& method, const ShadowInputs& inputs,
                                            const Settings& settings, ShadowSetup& setup, Trace* trace);
+
+// What a warp that handles spot and point lights (PSM, LiSPSM) covers: the body and the world points
+// its map must hold, B's vertices or, for a spot light, its reach of B (spot_reach).
+struct WarpRegion {
+    IntersectionBody body;
+    std::vector<glm::dvec3> ws_points;
+};
+// start_warp for such a warp: nullopt when `setup` was completed by a named fallback instead (an
+// empty body: uniform map; a view the spot does not light: focused map).
+std::optional<WarpRegion> start_warp_in_reach(const ShadowInputs& inputs, const Settings& settings, ShadowSetup& setup,
+                                              Trace* trace);
+
+// The vertices of B cut to a pyramid circumscribing the spot's cone (only there does the spot light
+// anything), the apex left out: no caster lies at the light, and a perspective map cannot hold its own
+// centre. Recorded as the step spot-reach.
+std::vector<glm::dvec3> spot_reach(const Light& spot, const ConvexPolyhedron& body, Trace* trace);
+
+// The vertices of `body` within a linear map's frustum (w > 0, u and v in [0, 1]; `world_to_uvz` in the
+// layout of ShadowMap), the light's position left out. A map fitted to a spot's reach takes in, through
+// the corners of its (u, v) square, visible points beyond the cone; its depth range must hold these
+// vertices too, or such a point falls past the far plane and reads as shadowed.
+std::vector<glm::dvec3> body_within_frustum(const ConvexPolyhedron& body, const glm::dmat4& world_to_uvz,
+                                            const glm::dvec3& light_position);
+
+// The direction light travels at `p`: a directional light's, else away from the light's position.
+glm::dvec3 light_ray_at(const Light& light, const glm::dvec3& p);
 
 // Names the fallback and fits the focused map to the body.
 void fall_back_to_focused(Note reason, const ShadowInputs& inputs, const IntersectionBody& body,

@@ -34,6 +34,7 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     m.bias = bias;
     const ShadowSetup setup = timed_setup(c, method, settings, m.setup_ms);
     m.fallbacks = setup.fallbacks;
+    for (const ShadowMap& map : setup.maps) m.texels_used += std::pow(tile_resolution(map, resolution), 2);
     const Stopwatch watch;
     const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
     m.raster_ms = watch.ms();

@@ -28,6 +28,7 @@ MeasureContext prepare_measurement(const Scene& scene, int width, int height);
 struct Measurement {
     std::string method;
     int resolution = 0;  // 0 for a technique without a map
+    double texels_used = 0.0;  // maps: the texels the setup's tiles hold (an atlas may leave part of the texture empty)
     double bias = -1.0;  // world units; negative: slope-scaled per pixel
     ShadowError error;
     double setup_ms = 0.0, raster_ms = 0.0;

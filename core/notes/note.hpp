@@ -25,6 +25,11 @@ enum class NoteKind {
     focus_out_of_range,
     no_visible_receiver,
     no_depth_image,
+    directional_light,
+    view_outside_cone,
+    light_on_region,
+    warp_not_needed,
+    no_light_axis,
     // Limits of the geometric techniques (shadow volumes, planar projection).
     open_mesh,
     eye_in_volume,

@@ -4,6 +4,7 @@
 
 #include "geometry/homogeneous_clip.hpp"
 #include "maps/map_lookup.hpp"
+#include "raster/paraboloid_edges.hpp"
 
 #include <algorithm>
 #include <array>
@@ -123,7 +124,12 @@ void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_pe
 DepthMap rasterize_depth(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
                          const ShadowSetup& setup, int resolution) {
     DepthMap out{resolution, std::vector<float>(static_cast<std::size_t>(resolution) * resolution, 1.0f)};
-    for (const ShadowMap& map : setup.maps) draw_map(triangles, casts_per_object, map, out);
+    for (const ShadowMap& map : setup.maps) {
+        if (splits_casters(map))  // split for this map's curvature and tile: the edges a GPU draws straight
+            draw_map(split_casters(triangles, casts_per_object, map, resolution), casts_per_object, map, out);
+        else
+            draw_map(triangles, casts_per_object, map, out);
+    }
     return out;
 }
 

@@ -23,8 +23,9 @@ struct DepthMap {
 // centre, the least depth d = d_pre / w of the caster triangles (objects whose flag is set). The
 // parts with w <= 0, outside the map's u, v in [0,1] or (a paraboloid) behind its hemisphere's plane
 // are clipped away; vertices are projected one by one and joined by straight edges, as a GPU draws
-// them. Casters in front of a map's near plane (d < 0) still cast and are stored as 0, as with a
-// clamped GPU depth range.
+// them; a paraboloid map with max_sagitta_texels > 0 draws its casters split until their straight
+// edges follow the curved images (split_casters, raster/paraboloid_edges.hpp). Casters in front of a
+// map's near plane (d < 0) still cast and are stored as 0, as with a clamped GPU depth range.
 DepthMap rasterize_depth(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
                          const ShadowSetup& setup, int resolution);
 

@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "methods/cascades.hpp"
+#include "methods/cube.hpp"
+#include "methods/dpsm.hpp"
 #include "methods/focused.hpp"
 #include "methods/lispsm.hpp"
 #include "methods/psm.hpp"
@@ -18,6 +20,7 @@ namespace {
 
 constexpr LightSupport kAllLights{};
 constexpr LightSupport kDirectionalOnly{true, false, false};
+constexpr LightSupport kPositionedOnly{false, true, true};
 
 std::deque<Method>& registry() {
     static std::deque<Method> methods{
@@ -36,14 +39,14 @@ std::deque<Method>& registry() {
          .title = "Perspective shadow map",
          .description = "Stamminger and Drettakis: the map built in the camera's post-perspective space",
          .settings = {body_kernel_setting()},
-         .lights = kDirectionalOnly,
+         .lights = kAllLights,
          .covers = Coverage::shadowable_points,
          .compute_maps = compute_psm},
         {.name = "lispsm",
          .title = "Light space perspective shadow map",
          .description = "Wimmer et al.: a perspective warp along the view, in light space",
          .settings = lispsm_settings(),
-         .lights = kDirectionalOnly,
+         .lights = LightSupport{.directional = true, .spot = true, .point = false},
          .covers = Coverage::shadowable_points,
          .compute_maps = compute_lispsm},
         {.name = "tsm",
@@ -67,6 +70,18 @@ std::deque<Method>& registry() {
          .lights = kDirectionalOnly,
          .compute_maps = compute_cascades,
          .reads_visible_depths = cascades_read_visible_depths},
+        {.name = "dpsm",
+         .title = "Dual-paraboloid shadow map",
+         .description = "Brabec et al.: two hemispheres around the light, each a paraboloid onto a disc",
+         .settings = dpsm_settings(),
+         .lights = kPositionedOnly,
+         .compute_maps = compute_dpsm},
+        {.name = "cube",
+         .title = "Cube shadow map",
+         .description = "six 90° perspective faces around the light, chosen by the major axis",
+         .settings = cube_settings(),
+         .lights = kPositionedOnly,
+         .compute_maps = compute_cube},
         {.name = "volumes",
          .title = "Stencil shadow volumes",
          .description = "Crow, Heidmann, Everitt and Kilgard: silhouette edges extruded to infinity, faces counted "

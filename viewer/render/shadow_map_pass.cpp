@@ -1,21 +1,30 @@
 #include "render/shadow_map_pass.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <glm/gtc/type_ptr.hpp>
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpaquePass.h>
 #include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLVertexBufferObject.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkOpenGLState.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkRenderState.h>
 #include <vtkShaderProgram.h>
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include "raster/paraboloid_edges.hpp"
 #include "render/surface_shading.hpp"
 
 namespace shadowlab {
@@ -70,6 +79,27 @@ MapArrays map_arrays(const ShadowSetup& setup, int resolution) {
         a.z_bias_scale[i] = static_cast<float>(map.z_bias_scale);
     }
     return a;
+}
+
+// Triangles as an actor whose vertices reach the shaders unchanged: stage 1 reads vertexMC as the
+// point in the setup's coordinates.
+vtkSmartPointer<vtkActor> triangles_actor(const WorldTriangles& triangles) {
+    vtkNew<vtkPoints> points;
+    for (const glm::dvec3& v : triangles.vertices) points->InsertNextPoint(v.x, v.y, v.z);
+    vtkNew<vtkCellArray> cells;
+    for (const std::array<int, 3>& t : triangles.triangles) {
+        const vtkIdType corners[3] = {t[0], t[1], t[2]};
+        cells->InsertNextCell(3, corners);
+    }
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetPolys(cells);
+    vtkNew<vtkOpenGLPolyDataMapper> mapper;
+    mapper->SetInputData(data);
+    mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    return actor;
 }
 
 // Whether every uniform was found. The results come in as arguments, so that every uniform is set
@@ -361,6 +391,7 @@ void ShadowMapPass::SetSetup(const ShadowSetup& setup, int resolution) {
                                     " maps; the GPU pass holds at most " + std::to_string(kMaxMaps));
     setup_ = setup;
     resolution_ = resolution;
+    split_casters_per_map();
     Modified();
 }
 
@@ -373,6 +404,23 @@ void ShadowMapPass::SetBias(double bias, const glm::dvec4& light, const glm::dve
 void ShadowMapPass::SetCasters(const std::vector<vtkProp*>& casters) {
     casters_ = casters;
     Modified();
+}
+
+void ShadowMapPass::SetCasterTriangles(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object) {
+    caster_triangles_ = triangles;
+    casts_per_object_ = casts_per_object;
+    split_casters_per_map();
+    Modified();
+}
+
+// Once per setup, resolution and casters, not per frame: the split depends on nothing else.
+void ShadowMapPass::split_casters_per_map() {
+    split_casters_.assign(setup_.maps.size(), nullptr);
+    if (caster_triangles_.triangles.empty()) return;
+    for (size_t i = 0; i < setup_.maps.size(); ++i)
+        if (splits_casters(setup_.maps[i]))
+            split_casters_[i] =
+                triangles_actor(split_casters(caster_triangles_, casts_per_object_, setup_.maps[i], resolution_));
 }
 
 void ShadowMapPass::SetShadePass(vtkRenderPass* shade) {
@@ -459,8 +507,9 @@ void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow*
     gl->PopFramebufferBindings();
 }
 
-// One map's casters into its tile. Every map draws with the same shader source, so nothing is
-// rebuilt: the mappers call SetShaderParameters before each draw, which sends drawn_map_.
+// One map's casters into its tile: the props, or the map's own split casters. Every map draws with
+// the same shader source, so nothing is rebuilt: the mappers call SetShaderParameters before each
+// draw, which sends drawn_map_.
 void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map) {
     const Tile tile = tile_of(setup_.maps[map], resolution_);
     if (tile.width <= 0 || tile.height <= 0) return;  // a tile without texels: nothing to draw
@@ -468,7 +517,15 @@ void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenG
     drawn_map_ = map;
     const bool paraboloid = setup_.maps[map].projection == Projection::paraboloid;
     if (paraboloid) glEnable(GL_CLIP_DISTANCE0);  // behind the hemisphere: cut, as the CPU rasterizer does
-    depth_pass_->Render(depth_state);
+    if (vtkProp* split = split_casters_[map]) {
+        vtkRenderState split_state(depth_state->GetRenderer());
+        split_state.SetPropArrayAndCount(&split, 1);
+        split_state.SetFrameBuffer(depth_state->GetFrameBuffer());
+        PreRender(&split_state);  // the pass's shader replacements, for this prop too
+        depth_pass_->Render(&split_state);
+        PostRender(&split_state);
+    } else
+        depth_pass_->Render(depth_state);
     if (paraboloid) glDisable(GL_CLIP_DISTANCE0);
 }
 
@@ -524,6 +581,8 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMa
 void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {
     if (shade_) shade_->ReleaseGraphicsResources(w);
     depth_pass_->ReleaseGraphicsResources(w);
+    for (vtkActor* split : split_casters_)
+        if (split) split->ReleaseGraphicsResources(w);
     if (fbo_) fbo_->ReleaseGraphicsResources(w);
     if (depth_) depth_->ReleaseGraphicsResources(w);
     if (colour_) colour_->ReleaseGraphicsResources(w);

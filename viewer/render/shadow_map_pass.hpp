@@ -6,7 +6,8 @@
 // Stage 1 renders the casters' depth into an FBO depth texture, once per map into that map's tile
 // (placed by the vertex shader exactly where the CPU rasterizer places it, however its edges fall
 // between texels, and scissored to the tile's texels; depth clamped, as the CPU rasterizer clamps
-// casters before the near plane; a paraboloid clipped to its hemisphere). Stage 2 renders the scene
+// casters before the near plane; a paraboloid clipped to its hemisphere, and its casters split first
+// where the map asks, as the CPU rasterizer splits them: SetCasterTriangles). Stage 2 renders the scene
 // through `shade` (normally a vtkRenderStepsPass) and looks each fragment up as maps/map_lookup.cpp
 // does: the setup's rule picks the map, the method's z bias is applied before the division by w
 // (XPSM step 18), constant or slope-scaled per fragment exactly as the CPU metrics compute it, and
@@ -21,7 +22,9 @@
 #include "maps/shadow_map.hpp"
 #include "render/map_overlay.hpp"
 #include "render/surface_shading.hpp"
+#include "scene/tessellation.hpp"
 
+class vtkActor;
 class vtkOpaquePass;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -49,6 +52,11 @@ public:
     // metrics use). light: (direction it travels, 0) or (position, 1); eye: the camera's position.
     void SetBias(double bias, const glm::dvec4& light, const glm::dvec3& eye);
     void SetCasters(const std::vector<vtkProp*>& casters);  // the props drawn into the maps
+    // The same casters as triangles, in the setup's coordinates, with their objects' flags: a map that
+    // splits its casters (a paraboloid with max_sagitta_texels > 0, raster/paraboloid_edges.hpp) draws
+    // them split exactly as the CPU rasterizer splits them, instead of the props. Until they are given,
+    // every map draws the props.
+    void SetCasterTriangles(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object);
     void SetShadePass(vtkRenderPass* shade);
     void SetOutput(Output output);
     // What the shaded output paints over the shading (the lit mask never has an overlay); ramp: the
@@ -78,6 +86,7 @@ private:
     void render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
     void render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map);
     void render_shaded(const vtkRenderState* s);
+    void split_casters_per_map();
 
     Stage stage_ = Stage::shade;
     vtkTimeStamp stage_time_;
@@ -90,6 +99,9 @@ private:
     ShadingFrame frame_;
     int resolution_ = 1024;
     std::vector<vtkProp*> casters_;
+    WorldTriangles caster_triangles_;
+    std::vector<bool> casts_per_object_;
+    std::vector<vtkSmartPointer<vtkActor>> split_casters_;  // per map: its casters split, or null: the props
     vtkSmartPointer<vtkRenderPass> shade_;
     vtkSmartPointer<vtkOpaquePass> depth_pass_;
     vtkSmartPointer<vtkOpenGLFramebufferObject> fbo_;

@@ -41,6 +41,8 @@ void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOpt
     pass->SetSetup(relative_to(in.setup, in.scene.camera.position), in.resolution);
     pass->SetBias(in.bias, pass_light(light), glm::dvec3(0.0));  // the eye
     pass->SetCasters({casters});
+    // Maps that split their casters (a paraboloid's max_sagitta_texels) draw these, split as the CPU does.
+    pass->SetCasterTriangles(relative_to(in.triangles, in.scene.camera.position), in.casters);
     pass->SetShadePass(vtkNew<vtkRenderStepsPass>());
     pass->SetOutput(options.lit_mask ? ShadowMapPass::Output::lit_mask : ShadowMapPass::Output::shaded);
     pass->SetOverlay(options.overlay, texels_ramp());

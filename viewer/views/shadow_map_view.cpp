@@ -1,8 +1,14 @@
 // The Shadow map view: the depth image the method produces (near dark, far light, empty texels
 // white), one screen square per texel, with the camera frustum drawn where the map puts it; a
-// texture of several maps (an atlas of cascades) with each tile's border and its label.
+// texture of several maps (an atlas of cascades) with each tile's border and its label. On a
+// paraboloid map, the tessellation error: the edges of the caster that bow most, straight as drawn
+// and curved as truly seen, with the worst sagitta in texels.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <cstdio>
+#include <map>
+#include <set>
 
 #include <vtkActor.h>
 #include <vtkBillboardTextActor3D.h>
@@ -13,6 +19,8 @@
 #include <vtkTextProperty.h>
 
 #include "maps/map_lookup.hpp"
+#include "raster/paraboloid_edges.hpp"
+#include "views/space_parts.hpp"
 #include "views/view_parts.hpp"
 
 namespace shadowlab {
@@ -73,9 +81,21 @@ glm::dmat4 pixels_from_world(const ShadowMap& map, int n) {
     return pixels_from_uvz * map.world_to_uvz;
 }
 
+// A paraboloid's disc (ρ = 1, where the hemispheres meet: the seam), inscribed in its tile.
+void add_disc_rim(const Aabb& tile, std::vector<std::pair<glm::dvec3, glm::dvec3>>& edges) {
+    const glm::dvec3 centre{tile.center().x, tile.center().y, 0.6};
+    const double radius = (tile.max.x - tile.min.x) / 2;
+    constexpr int kSegments = 128;
+    const auto at = [&](int k) {
+        const double t = 2 * std::numbers::pi * k / kSegments;
+        return centre + radius * glm::dvec3(std::cos(t), std::sin(t), 0.0);
+    };
+    for (int k = 0; k < kSegments; ++k) edges.push_back({at(k), at(k + 1)});
+}
+
 // Each tile's border, its edges through the texel edges the viewport names, and a label inside its
-// top-left corner on two lines, so that it fits a small tile: "cascade 2" (for maps chosen by view
-// depth; "map 2" otherwise) over "1024²".
+// top-left corner on two lines, so that it fits a small tile: the map's name ("cascade 2", "front",
+// "face +x"; map_name) over "1024²"; a paraboloid's disc drawn in its tile.
 void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
     std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
     for (size_t i = 0; i < setup.maps.size(); ++i) {
@@ -83,6 +103,7 @@ void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
         const glm::dvec3 a(tile.min.x, tile.min.y, 0.6), b(tile.max.x, tile.min.y, 0.6), c(tile.max.x, tile.max.y, 0.6),
             d(tile.min.x, tile.max.y, 0.6);
         for (const auto& edge : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}}) edges.push_back(edge);
+        if (setup.maps[i].projection == Projection::paraboloid) add_disc_rim(tile, edges);
         const auto side = static_cast<int>(std::lround(tile_resolution(setup.maps[i], n)));
         const std::string text = map_name(setup, i) + "\n" + std::to_string(side) + "²";
         vtkNew<vtkBillboardTextActor3D> label;
@@ -97,6 +118,126 @@ void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
     renderer->AddActor(borders);
 }
 
+const glm::dvec3 kChordColour{0.2, 0.85, 1.0}, kArcColour{1.0, 0.35, 0.75};
+
+// A straight world edge seen by a paraboloid map, with its sagitta in texels (raster/paraboloid_edges).
+struct SeenEdge {
+    glm::dvec3 a, b;
+    double sagitta_texels;
+};
+
+bool behind(const ShadowMap& map, const glm::dvec3& a, const glm::dvec3& b) {
+    return hemisphere_side(map, a) < 0.0 && hemisphere_side(map, b) < 0.0;
+}
+
+// The edges a map draws in the place of one: the edge itself, or its pieces on the map's side where
+// the map splits.
+std::vector<SeenEdge> drawn_pieces(const ShadowMap& map, const SeenEdge& e, double texels_per_unit) {
+    if (!splits_casters(map)) return {e};
+    const std::vector<glm::dvec3> points =
+        split_edge(map.paraboloid, e.a, e.b, texels_per_unit, map.max_sagitta_texels);
+    std::vector<SeenEdge> pieces;
+    for (size_t k = 0; k + 1 < points.size(); ++k)
+        if (!behind(map, points[k], points[k + 1]))
+            pieces.push_back(
+                {points[k], points[k + 1], edge_sagitta(map.paraboloid, points[k], points[k + 1]) * texels_per_unit});
+    return pieces;
+}
+
+// Per caster object, its edges (each once) with some part on the map's side of its plane.
+std::map<int, std::vector<SeenEdge>> seen_edges_by_object(const Inspection& in, const ShadowMap& map) {
+    const double texels_per_unit = texels_per_disc_unit(map, in.resolution);
+    const WorldTriangles& t = in.triangles;
+    std::set<std::pair<int, int>> done;
+    std::map<int, std::vector<SeenEdge>> edges;
+    for (size_t i = 0; i < t.triangles.size(); ++i) {
+        if (!in.casters.at(t.object[i])) continue;
+        for (int k = 0; k < 3; ++k) {
+            const auto [first, second] = std::minmax(t.triangles[i][k], t.triangles[i][(k + 1) % 3]);
+            const glm::dvec3 &a = t.vertices[first], &b = t.vertices[second];
+            if (!done.insert({first, second}).second || behind(map, a, b)) continue;
+            edges[t.object[i]].push_back({a, b, edge_sagitta(map.paraboloid, a, b) * texels_per_unit});
+        }
+    }
+    return edges;
+}
+
+double worst_sagitta(const std::vector<SeenEdge>& edges) {
+    double worst = 0.0;
+    for (const SeenEdge& e : edges) worst = std::max(worst, e.sagitta_texels);
+    return worst;
+}
+
+// The part of the edge on the map's side, as fractions along a -> b.
+std::pair<double, double> front_part(const ShadowMap& map, const SeenEdge& e) {
+    const double side_a = hemisphere_side(map, e.a), side_b = hemisphere_side(map, e.b);
+    if (side_a >= 0.0 && side_b >= 0.0) return {0.0, 1.0};
+    const double cut = side_a / (side_a - side_b);
+    return side_a >= 0.0 ? std::pair{0.0, cut} : std::pair{cut, 1.0};
+}
+
+// Texture pixels (texel (x, y) centred at pixel (x, y)) of a point before the division, just above
+// the image.
+glm::dvec3 on_image(const ShadowMap& map, const glm::dvec4& h, int n) {
+    return glm::dvec3(texture_uv(map, glm::dvec2(h) / h.w) * double(n) - 0.5, 0.7);
+}
+
+// The edge as the rasterizer draws it: its ends projected and joined straight, cut where the plane
+// distance interpolated along that chord crosses 0 (clip_where in core/raster/depth_map.cpp).
+std::pair<glm::dvec3, glm::dvec3> drawn_chord(const ShadowMap& map, const SeenEdge& e, int n) {
+    const glm::dvec4 ha = map_homogeneous(map, e.a), hb = map_homogeneous(map, e.b);
+    const auto [from, to] = front_part(map, e);
+    return {on_image(map, glm::mix(ha, hb, from), n), on_image(map, glm::mix(ha, hb, to), n)};
+}
+
+// The edge as the map truly sees it: 32 points along its part in front, each projected.
+std::vector<std::pair<glm::dvec3, glm::dvec3>> true_arc(const ShadowMap& map, const SeenEdge& e, int n) {
+    constexpr int pieces = 32;
+    const auto [from, to] = front_part(map, e);
+    const auto at = [&](int k) {
+        return on_image(map, map_homogeneous(map, glm::mix(e.a, e.b, from + (to - from) * k / pieces)), n);
+    };
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> arc;
+    for (int k = 0; k < pieces; ++k) arc.push_back({at(k), at(k + 1)});
+    return arc;
+}
+
+// One paraboloid map's overlay, cut to its tile: the caster whose edges bow most, each edge drawn
+// straight as the map draws it (whole, or its pieces where the map splits its casters) and along its
+// true arc; and a line naming the caster, its worst sagitta as given and, split, as drawn.
+std::string draw_tessellation_error(vtkRenderer* renderer, const Inspection& in, size_t i) {
+    const ShadowMap& map = in.setup.maps[i];
+    const std::map<int, std::vector<SeenEdge>> edges = seen_edges_by_object(in, map);
+    if (edges.empty()) return map_name(in.setup, i) + ": no caster in front of its plane";
+    const auto& [object, worst_edges] = *std::max_element(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
+        return worst_sagitta(x.second) < worst_sagitta(y.second);
+    });
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> chords, arcs;
+    std::vector<SeenEdge> drawn;
+    for (const SeenEdge& e : worst_edges) {
+        for (const SeenEdge& piece : drawn_pieces(map, e, texels_per_disc_unit(map, in.resolution))) {
+            chords.push_back(drawn_chord(map, piece, in.resolution));
+            drawn.push_back(piece);
+        }
+        for (const auto& piece : true_arc(map, e, in.resolution)) arcs.push_back(piece);
+    }
+    const Placement in_tile{.clip = tile_in_pixels(map, in.resolution)};
+    for (const auto& [segments, colour] : {std::pair{chords, kChordColour}, std::pair{arcs, kArcColour}}) {
+        auto actor = actor_for(segments_polydata(segments, in_tile), colour);
+        actor->GetProperty()->SetLineWidth(2.0f);
+        renderer->AddActor(actor);
+    }
+    const std::string& name = in.scene.objects[object].name;
+    const std::string caster = name.empty() ? "object " + std::to_string(object) : name;
+    char text[200];
+    std::snprintf(text, sizeof text, "%s: %s's edges bow up to %.1f texels", map_name(in.setup, i).c_str(),
+                  caster.c_str(), worst_sagitta(worst_edges));
+    if (!splits_casters(map)) return text;
+    char split[120];
+    std::snprintf(split, sizeof split, ", split to %.2g: %.2f", map.max_sagitta_texels, worst_sagitta(drawn));
+    return text + std::string(split);
+}
+
 }  // namespace
 
 const glm::dvec3 kTileBorder{0.2, 0.9, 0.5};
@@ -109,10 +250,14 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
         return {};
     }
     ViewReport report;
+    std::string sagittas;  // per paraboloid map: the worst sagitta, for the caption
     show_image(renderer, depth_to_grey(in.depth));
-    for (const ShadowMap& map : in.setup.maps) {  // the camera frustum where each linear map puts it
+    for (size_t i = 0; i < in.setup.maps.size(); ++i) {  // the camera frustum where each linear map puts it
+        const ShadowMap& map = in.setup.maps[i];
         if (map.projection == Projection::paraboloid) {
             report.notes.push_back("the camera frustum is not drawn on a paraboloid map (its edges bend)");
+            report.notes.push_back(draw_tessellation_error(renderer, in, i));
+            sagittas += "\n" + report.notes.back();
             continue;
         }
         // Cut to the map's tile: what lies outside the map is not in it.
@@ -122,14 +267,20 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
         renderer->AddActor(frustum);
     }
     if (in.setup.maps.size() > 1) draw_tiles(renderer, in.setup, n);
+    const bool paraboloids = std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
+                                         [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
+    if (paraboloids)
+        add_legend(renderer, {{kChordColour, "an edge as a GPU draws it (projected ends joined straight)"},
+                              {kArcColour, "the same edge as the map sees it (its true arc)"}});
     vtkNew<TexelGridToggle> toggle;
     toggle->grid = actor_for(texel_grid(n), glm::dvec3(0.35, 0.55, 0.85));
     renderer->AddActor(toggle->grid);
     renderer->AddObserver(vtkCommand::StartEvent, toggle);
     const std::string maps = in.setup.maps.size() > 1 ? ", " + std::to_string(in.setup.maps.size()) + " maps in tiles" : "";
     add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.name() + maps +
-                              " (camera frustum in yellow; " + (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
-                              "texel grid when zoomed in)");
+                              " (camera frustum in yellow; " +
+                              (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
+                              "texel grid when zoomed in)" + sagittas);
     return report;
 }
 

@@ -69,6 +69,7 @@ void look_oblique(vtkRenderer* renderer, const Aabb& framed, ViewKind view, cons
 
 void place_space_camera(vtkRenderer* renderer, const SpaceFrame& frame, SpacePreset preset, ViewKind view) {
     const Aabb& framed = frame.clip;  // all that is drawn: nothing runs out of the picture
+    if (frame.atlas) preset = SpacePreset::from_light;  // the texture's own picture (space_frame.cpp)
     switch (preset) {
         case SpacePreset::orbit: look_oblique(renderer, framed, view, frame); break;
         case SpacePreset::from_light: {

@@ -37,11 +37,14 @@ Aabb box_in_space(const glm::dmat4& space_from_world, const std::vector<glm::dve
     return box;
 }
 
-// The intersection body B, what the light-space methods work on; nullopt without one.
+// The intersection body B, what the light-space methods work on; for a warp of a spot light, B cut
+// to the spot's reach (part of B may lie behind the spot, where its light space has no place);
+// nullopt without one.
 std::optional<std::vector<glm::dvec3>> body_vertices(const Inspection& in) {
-    if (const Step* body = in.trace.find("body"))
-        for (const NamedGeometry& g : body->geometry)
-            if (const auto* poly = std::get_if<ConvexPolyhedron>(&g.geometry)) return poly->vertices;
+    for (const char* id : {"spot-reach", "body"})
+        if (const Step* body = in.trace.find(id))
+            for (const NamedGeometry& g : body->geometry)
+                if (const auto* poly = std::get_if<ConvexPolyhedron>(&g.geometry)) return poly->vertices;
     return std::nullopt;
 }
 
@@ -155,6 +158,12 @@ Placement SpaceFrame::placement_from(const glm::dmat4& shape_from_world) const {
     return {.to_space = from_world * glm::inverse(shape_from_world), .clip = clip, .reach = 0.0, .head = arrow_head()};
 }
 
+bool unit_space_is_an_atlas(const Inspection& in, Space space) {
+    return space == Space::unit && in.has_map() &&
+           std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
+                       [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
+}
+
 std::optional<SpaceFrame> space_frame(const Inspection& in, ViewKind view, const Step* chosen) {
     SpaceFrame frame{.space = space_of(view)};
     auto from_world = world_to(in, frame.space);
@@ -165,7 +174,9 @@ std::optional<SpaceFrame> space_frame(const Inspection& in, ViewKind view, const
     }
     if (!from_world) return std::nullopt;
     frame.from_world = *from_world;
-    frame.region = framed_region(in, view, frame.from_world, chosen);
+    frame.atlas = unit_space_is_an_atlas(in, frame.space);
+    frame.region =
+        frame.atlas ? Aabb{glm::dvec3(0.0), glm::dvec3(1.0)} : framed_region(in, view, frame.from_world, chosen);
     if (frame.region.empty()) frame.region = box_in_space(frame.from_world, {glm::dvec3(0.0)});
     // A margin on every axis, at least a share of the widest so that a flat region keeps some depth.
     const glm::dvec3 extent = frame.region.extent();
@@ -179,8 +190,11 @@ std::optional<SpaceFrame> space_frame(const Inspection& in, ViewKind view, const
     const glm::dvec3 light_world = scene.light.is_directional() ? scene.light.direction
                                                                 : glm::normalize(centre - scene.light.position);
     const double step = 1e-4 * std::max(scene.bounds().diagonal(), 1e-9);
-    frame.light = direction_in_space(frame.from_world, centre, light_world, step);
-    frame.view = direction_in_space(frame.from_world, centre, scene.camera.view_direction(), step);
+    // The atlas is seen from in front of its (u, v) plane, as the Shadow map view shows the texture: u right, v up.
+    frame.light =
+        frame.atlas ? glm::dvec3(0.0, 0.0, -1.0) : direction_in_space(frame.from_world, centre, light_world, step);
+    frame.view = frame.atlas ? glm::dvec3(0.0, 1.0, 0.0)
+                             : direction_in_space(frame.from_world, centre, scene.camera.view_direction(), step);
     // The light arrow ends at the region's face toward the light, entering from beyond it.
     frame.light_to = frame.region.center() - 0.5 * glm::dot(glm::abs(frame.light), extent) * frame.light;
     frame.light_from = frame.light_to - kLightArrow * size * frame.light;

@@ -25,6 +25,7 @@ struct SpaceFrame {
     glm::dvec3 light{0, 0, 1};   // the light's direction in the space at the region's centre, unit
     glm::dvec3 view{0, 1, 0};    // the camera's view direction carried likewise, unit
     glm::dvec3 light_from, light_to;  // the light arrow, in the space
+    bool atlas = false;  // the atlas of paraboloid maps (unit_space_is_an_atlas): a picture, seen straight on
 
     // The region's middle extent: arrow heads and the axes are sized by it, so that one long axis (a
     // deep light box seen end-on) does not blow them up.
@@ -33,6 +34,10 @@ struct SpaceFrame {
     // Shapes of a space whose world-to-space matrix is `shape_from_world`, carried into this one.
     Placement placement_from(const glm::dmat4& shape_from_world) const;
 };
+
+// Paraboloid maps reach their atlas by no matrix: their unit space is the atlas itself, holding
+// the steps' discs alone; nothing of the world can be carried there.
+bool unit_space_is_an_atlas(const Inspection& in, Space space);
 
 // The frame of a view showing the chosen step (null: none); nullopt when the method has no such space
 // (a technique's Light space and PPLS).

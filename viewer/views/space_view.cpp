@@ -4,6 +4,8 @@
 // is drawn bright in its roles' colours, earlier steps dimmed; a legend names what is drawn, and the
 // caption says which step it is, its formula and its values. A geometric technique has no map and
 // no light spaces: the World view shows its steps.
+#include <algorithm>
+
 #include <vtkRenderer.h>
 
 #include "io/value_text.hpp"
@@ -14,13 +16,20 @@ namespace {
 
 const glm::dvec3 kMissed{1.0, 0.2, 0.8}, kAxes{0.75, 0.75, 0.75};
 
+// A light inside the scene's bounds (a lamp in a room): walls around it would hide every step.
+bool light_indoors(const Scene& scene) {
+    return !scene.light.is_directional() && scene.bounds().contains(scene.light.position);
+}
+
 // The scene's triangles, cut to the frame's clip box (in PPLS, points near w = 0 would otherwise
-// fly off toward infinity); opaque in the World, translucent where the step shapes matter more.
+// fly off toward infinity); opaque in the World unless the light is indoors, translucent where the
+// step shapes matter more.
 void draw_scene(SpaceCanvas& canvas, const Inspection& in, ViewKind view, const ViewOptions& options) {
     if (view == ViewKind::ppls && !options.scene_in_ppls) return;
     const Placed scene = triangles_polydata(in.triangles, std::vector<bool>(in.scene.objects.size(), true),
                                             object_colours(in.scene), canvas.frame().placement_from(glm::dmat4(1.0)));
-    canvas.draw(scene, {.colour = glm::dvec3(1.0), .opacity = view == ViewKind::world ? 1.0 : 0.35}, "");
+    const bool opaque = view == ViewKind::world && !light_indoors(in.scene);
+    canvas.draw(scene, {.colour = glm::dvec3(1.0), .opacity = opaque ? 1.0 : 0.35}, "");
 }
 
 // Every linear map's volume (a cascade's maps side by side), labelled at its far corner.
@@ -75,6 +84,22 @@ void draw_missed_points(SpaceCanvas& canvas, const Inspection& in) {
                              std::to_string(missed.in_shadow.size()) + " in shadow");
 }
 
+// What the steps are drawn over: the scene, the camera's frustum, the maps' volumes, the input
+// boxes (World), the light and the space's axes.
+void draw_context(SpaceCanvas& canvas, const Inspection& in, ViewKind view, const ViewOptions& options,
+                  ViewReport& report) {
+    draw_scene(canvas, in, view, options);
+    const RoleStyle& camera = role_style(Role::view);
+    canvas.draw(geometry_polydata(in.inputs.frustum, canvas.frame().placement_from(glm::dmat4(1.0))),
+                {.colour = camera.colour}, camera.legend);
+    if (in.has_map()) draw_map_volumes(canvas, in.setup, report);
+    if (view == ViewKind::world) {
+        draw_input_boxes(canvas, in.inputs.casters, Role::casters);
+        draw_input_boxes(canvas, in.inputs.receivers, Role::receivers);
+    }
+    draw_light_and_axes(canvas);
+}
+
 // The index of the chosen step (the last one by default); the step count when none was recorded.
 size_t chosen_step(const Trace& trace, const std::string& id) {
     const std::vector<Step>& steps = trace.steps();
@@ -100,7 +125,10 @@ std::string values_text(const Step& step) {
 // "PPLS · lispsm · Step 8 of 10 · Perspective warp P", the step's formula, its values.
 std::string caption(const Inspection& in, ViewKind view, const SpaceFrame& frame, const ViewOptions& options, size_t chosen) {
     std::string title = view_title(view);
-    if (view == ViewKind::ppls && frame.space == Space::unit) title += " (no warp: the map's unit space)";
+    if (frame.atlas)
+        title += " (the atlas: paraboloids reach it by no matrix)";
+    else if (view == ViewKind::ppls && frame.space == Space::unit)
+        title += " (no warp: the map's unit space)";
     title += std::string(" · ") + in.name() + " · " + to_string(options.preset);
     const std::vector<Step>& steps = in.trace.steps();
     if (chosen >= steps.size()) return title + " · no steps recorded";
@@ -129,18 +157,10 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKin
     // the context (scene, frustum, map, light, axes), the chosen step.
     SpaceCanvas canvas(renderer, *frame);
     draw_steps(canvas, in, 0, chosen, chosen);
-    draw_scene(canvas, in, view, options);
-    const RoleStyle& camera = role_style(Role::view);
-    canvas.draw(geometry_polydata(in.inputs.frustum, frame->placement_from(glm::dmat4(1.0))), {.colour = camera.colour},
-                camera.legend);
-    if (in.has_map()) draw_map_volumes(canvas, in.setup, report);
-    if (view == ViewKind::world) {
-        draw_input_boxes(canvas, in.inputs.casters, Role::casters);
-        draw_input_boxes(canvas, in.inputs.receivers, Role::receivers);
-    }
-    draw_light_and_axes(canvas);
+    const bool world_context = !unit_space_is_an_atlas(in, frame->space);
+    if (world_context) draw_context(canvas, in, view, options, report);
     draw_steps(canvas, in, chosen, chosen + 1, chosen);
-    if (in.has_map()) draw_missed_points(canvas, in);
+    if (world_context && in.has_map()) draw_missed_points(canvas, in);
     canvas.finish();
     place_space_camera(renderer, *frame, options.preset, view);
     add_caption(renderer, caption(in, view, *frame, options, chosen));

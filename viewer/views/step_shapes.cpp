@@ -38,9 +38,10 @@ void draw_shape(SpaceCanvas& canvas, const NamedGeometry& g, const ShadowSetup& 
 
 void draw_steps(SpaceCanvas& canvas, const Inspection& in, size_t from, size_t to, size_t chosen) {
     const std::vector<Step>& steps = in.trace.steps();
+    const bool atlas = unit_space_is_an_atlas(in, canvas.frame().space);  // only its own steps can be drawn there
     for (size_t i = from; i < to && i < steps.size(); ++i) {
         const auto step_from_world = world_to(in, steps[i].space);
-        if (!step_from_world) continue;
+        if (!step_from_world || (atlas && steps[i].space != Space::unit)) continue;
         Placement placement = canvas.frame().placement_from(*step_from_world);
         placement.reach = in.inputs.scene_bounds.diagonal();  // a shadow volume's vertices at infinity
         for (const NamedGeometry& g : steps[i].geometry) draw_shape(canvas, g, in.setup, placement, i == chosen);

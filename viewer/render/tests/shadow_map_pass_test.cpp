@@ -103,6 +103,26 @@ TEST(GpuAgreesWithCpuOnCascades, ByViewDepthWithABlendBandAndByTileBounds) {
     }
 }
 
+// Omnidirectional maps of a point light in a room: the cube's six perspective faces, and the two
+// paraboloids whose vertices the vertex shader projects (the CPU draws the same straight edges
+// between projected vertices, with or without the casters split first).
+TEST(GpuAgreesWithCpuOnOmniMaps, CubeAndDualParaboloidInTheLampRoom) {
+    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/lamp_room.json");
+    scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
+    using SettingTexts = std::map<std::string, std::string>;
+    for (const auto& [method, settings] : {std::pair{"cube", SettingTexts{}}, std::pair{"dpsm", SettingTexts{}},
+                                           std::pair{"dpsm", SettingTexts{{"tessellate", "0.5"}}}}) {
+        InspectionRequest request{.method = method, .settings = settings, .resolution = 2048, .bias = 0.002};
+        const Agreement a = gpu_against_cpu_lookup(inspect_scene(scene, request), kWidth, kHeight);
+        ASSERT_EQ(a.undrawn, 0u);
+        ASSERT_GT(a.compared, kWidth * kHeight / 4u);
+        EXPECT_GE(a.share(), 0.995) << method << ": " << a.compared - a.agreed << " of " << a.compared
+                                    << " pixels differ";
+        std::cout << method << (settings.empty() ? "" : " tessellate=0.5") << ": GPU and CPU agree on " << a.agreed
+                  << " of " << a.compared << " pixels away from edges\n";
+    }
+}
+
 // A million units from the origin float32 world coordinates step by 0.06 units: the Camera view
 // draws relative to the eye, so the GPU still agrees with the CPU there (issue 11).
 TEST(GpuAgreesWithCpuFarFromTheOrigin, OnTheSpotScene) {
