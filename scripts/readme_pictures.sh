@@ -56,6 +56,14 @@ done
 x $shadowlab render data/scenes/default.json --method cascades --set tiles=1,0.5,0.5,0.5 --view shadowmap \
     --size 640x360 --out $images/cascades_tiles.png
 
+# Omnidirectional maps in the lamp room: the dual-paraboloid atlas with the bowed edges, its shadows
+# without and with the casters split, and the cube's atlas.
+x $shadowlab render data/scenes/lamp_room.json --method dpsm --view shadowmap --size 640x360 --out $images/dpsm_atlas.png
+x $shadowlab render data/scenes/lamp_room.json --method dpsm --view camera --size 640x360 --out $images/dpsm_camera.png
+x $shadowlab render data/scenes/lamp_room.json --method dpsm --set tessellate=0.5 --view camera --size 640x360 \
+    --out $images/dpsm_camera_tessellated.png
+x $shadowlab render data/scenes/lamp_room.json --method cube --view shadowmap --size 640x360 --out $images/cube_atlas.png
+
 [[ ${1:-} == --views ]] && exit 0
 
 # The measured trade: error against cost, error as the light turns parallel to the view, and
