@@ -200,3 +200,25 @@ TEST(ShadowMapView, AnAtlasShowsTheBorderBetweenItsTilesAndALabelEach) {
     EXPECT_TRUE(any_contains(texts, "cascade 1\n512²"));
     EXPECT_TRUE(any_contains(texts, "cascade 2\n512²"));
 }
+
+// A cube map's faces, stored as 3 x 2, are shown unfolded as a cross in a texture four faces wide:
+// the corner cells hold no face (white), the +y face above +z holds the ceiling beam (dark).
+TEST(ShadowMapView, ACubeMapIsShownUnfoldedAsACross) {
+    const Inspection cube = inspect(shipped_scene("lamp_room", 512, 512), "cube", 1024);
+    constexpr int kSide = 512;  // the cross's texture, four faces wide, fills the square: cells of 128 pixels
+    const RgbImage image = render_view(cube, ViewKind::shadow_map, {}, kSide, kSide);
+    const auto white_share = [&](int column, int row) {
+        int white = 0, all = 0;
+        for (int y = row * 128 + 8; y < (row + 1) * 128 - 8; ++y)
+            for (int x = column * 128 + 8; x < (column + 1) * 128 - 8; ++x, ++all)
+                white += image.at(x, y)[0] == 255 && image.at(x, y)[1] == 255 && image.at(x, y)[2] == 255;
+        return double(white) / all;
+    };
+    EXPECT_GT(white_share(0, 0), 0.99) << "no face in the cross's corner";
+    EXPECT_GT(white_share(3, 2), 0.99);
+    EXPECT_LT(white_share(1, 0), 0.9) << "+y: the beam over the bulb";
+    const std::vector<std::string> texts = texts_of(cube, ViewKind::shadow_map, kSide, kSide);
+    for (const char* face : {"face +x", "face -x", "face +y", "face -y", "face +z", "face -z"})
+        EXPECT_TRUE(any_contains(texts, face)) << face;
+    EXPECT_TRUE(any_contains(texts, "unfolded as a cross"));
+}

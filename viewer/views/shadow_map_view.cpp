@@ -4,6 +4,7 @@
 // paraboloid map, the tessellation error: the edges of the caster that bow most, straight as drawn
 // and curved as truly seen, with the worst sagitta in texels.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include <vtkTextProperty.h>
 
 #include "maps/map_lookup.hpp"
+#include "methods/cascade_atlas.hpp"
 #include "raster/paraboloid_edges.hpp"
 #include "views/space_parts.hpp"
 #include "views/view_parts.hpp"
@@ -238,12 +240,47 @@ std::string draw_tessellation_error(vtkRenderer* renderer, const Inspection& in,
     return text + std::string(split);
 }
 
+// The texture as shown, and the setup whose tiles say where each map lies in it.
+struct ShownTexture {
+    DepthMap depth;
+    ShadowSetup setup;
+};
+
+// Where each cube face is shown, in cells of a quarter of the shown texture's side (column, row
+// from the top): the cube unfolded as a cross, +y above, -x +z +x -z across, -y below.
+constexpr std::array<glm::ivec2, 6> kCrossCells{{{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}}};
+
+// A cube's six faces moved from their 3 x 2 atlas into the cross, texel for texel: the shown
+// texture is four faces wide (a face keeps its side, rounded to whole texels).
+ShownTexture as_cross(const Inspection& in) {
+    const int side = static_cast<int>(std::lround(tile_resolution(in.setup.maps.front(), in.resolution)));
+    const int shown_n = 4 * side;
+    ShownTexture shown{.depth = {.resolution = shown_n, .depth = std::vector<float>(size_t(shown_n) * shown_n, 1.0f)},
+                       .setup = in.setup};
+    for (ShadowMap& map : shown.setup.maps) {
+        const glm::ivec2 cell = kCrossCells[map.cube_face];
+        const ShadowMap& stored = in.setup.maps[&map - shown.setup.maps.data()];
+        map.viewport = tile_viewport({.column = cell.x, .row = cell.y, .side = 0.25});
+        const glm::ivec2 corner{cell.x * side, shown_n - (cell.y + 1) * side};  // texel rows count up (v)
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                const glm::ivec2 texel = texel_of(stored, (glm::dvec2(x, y) + 0.5) / double(side), in.resolution);
+                shown.depth.depth[size_t(corner.y + y) * shown_n + corner.x + x] = in.depth.at(texel.x, texel.y);
+            }
+    }
+    return shown;
+}
+
+ShownTexture shown_texture(const Inspection& in) {
+    if (in.setup.selection.rule == MapSelection::Rule::cube_face && in.setup.maps.size() == 6) return as_cross(in);
+    return {in.depth, in.setup};
+}
+
 }  // namespace
 
 const glm::dvec3 kTileBorder{0.2, 0.9, 0.5};
 
 ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
-    const int n = in.resolution;
     renderer->SetBackground(0.12, 0.13, 0.16);
     if (!in.has_map()) {
         add_caption(renderer, in.title() + ": no shadow map (a geometric technique; see the Stencil count view)");
@@ -251,9 +288,11 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
     }
     ViewReport report;
     std::string sagittas;  // per paraboloid map: the worst sagitta, for the caption
-    show_image(renderer, depth_to_grey(in.depth));
-    for (size_t i = 0; i < in.setup.maps.size(); ++i) {  // the camera frustum where each linear map puts it
-        const ShadowMap& map = in.setup.maps[i];
+    const ShownTexture shown = shown_texture(in);
+    const int n = shown.depth.resolution;
+    show_image(renderer, depth_to_grey(shown.depth));
+    for (size_t i = 0; i < shown.setup.maps.size(); ++i) {  // the camera frustum where each linear map puts it
+        const ShadowMap& map = shown.setup.maps[i];
         if (map.projection == Projection::paraboloid) {
             report.notes.push_back("the camera frustum is not drawn on a paraboloid map (its edges bend)");
             report.notes.push_back(draw_tessellation_error(renderer, in, i));
@@ -266,7 +305,7 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
         frustum->GetProperty()->SetLineWidth(2.0f);
         renderer->AddActor(frustum);
     }
-    if (in.setup.maps.size() > 1) draw_tiles(renderer, in.setup, n);
+    if (shown.setup.maps.size() > 1) draw_tiles(renderer, shown.setup, n);
     const bool paraboloids = std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
                                          [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
     if (paraboloids)
@@ -277,7 +316,10 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
     renderer->AddActor(toggle->grid);
     renderer->AddObserver(vtkCommand::StartEvent, toggle);
     const std::string maps = in.setup.maps.size() > 1 ? ", " + std::to_string(in.setup.maps.size()) + " maps in tiles" : "";
-    add_caption(renderer, "Shadow map " + std::to_string(n) + "² — " + in.name() + maps +
+    const std::string cross =
+        n != in.resolution ? " (stored as 3 x 2, shown unfolded as a cross: +y above, -x +z +x -z across, -y below)"
+                           : "";
+    add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + maps + cross +
                               " (camera frustum in yellow; " +
                               (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
                               "texel grid when zoomed in)" + sagittas);
