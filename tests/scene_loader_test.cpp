@@ -833,5 +833,24 @@ TEST(SceneLoader, ALightInsideACasterIsRefused) {
     }
 }
 
+// Area lights: a sphere light's radius and the sun's angular radius, 0 (hard) by default; negative
+// or too wide refused by field.
+TEST(SceneLoader, AreaLightsAreReadAndChecked) {
+    json scene = minimal();
+    EXPECT_FALSE(parse_scene(scene.dump(), kFile).light.is_area());
+    scene["light"] = {{"type", "directional"}, {"angular_radius_deg", 0.5}};
+    EXPECT_EQ(parse_scene(scene.dump(), kFile).light.angular_radius_deg, 0.5);
+    scene["light"]["angular_radius_deg"] = -0.1;
+    expect_error(scene, "light.angular_radius_deg", "expected a number in [0, 45), got -0.1");
+    scene["light"]["angular_radius_deg"] = 45;
+    expect_error(scene, "light.angular_radius_deg", "expected a number in [0, 45), got 45");
+    scene["light"] = {{"type", "point"}, {"position", {0, 5, 0}}, {"radius", 0.25}};
+    EXPECT_TRUE(parse_scene(scene.dump(), kFile).light.is_area());
+    scene["light"]["radius"] = -1;
+    expect_error(scene, "light.radius", "expected a number in [0, 1e+12), got -1");
+    scene["light"] = {{"type", "point"}, {"position", {0, 5, 0}}, {"angular_radius_deg", 1}};
+    expect_error(scene, "light.angular_radius_deg", "allowed for a point light: type, position, range, radius");
+}
+
 }  // namespace
 }  // namespace shadowlab

@@ -7,6 +7,7 @@
 
 #include "math/parallel_rows.hpp"
 #include "reference/camera_rays.hpp"
+#include "reference/light_samples.hpp"
 #include "reference/ray_tracer.hpp"
 
 #include <algorithm>
@@ -71,10 +72,26 @@ double facing_light(const Light& light, const std::array<glm::dvec3, 3>& triangl
     return glm::dot(normal, glm::normalize(to_light));
 }
 
-enum class ShadowRays { traced, skipped };
+// The share of the light the surface point p sees, from the stratified samples (seeded by the pixel).
+double visible_share(const RayTracer& tracer, const Light& light, const std::array<glm::dvec3, 3>& triangle,
+                     const glm::dvec3& p, int samples, std::uint32_t seed) {
+    const glm::dvec3 to_centre = light.is_directional() ? -glm::normalize(light.direction) : light.position - p;
+    glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
+    if (glm::dot(normal, to_centre) < 0.0) normal = -normal;
+    const glm::dvec3 origin = p + surface_offset(triangle, p) * normal;
+    const std::vector<glm::dvec2> disc = stratified_disc(samples, seed);
+    int seen = 0;
+    for (const glm::dvec2& s : disc)
+        seen += light.is_directional()
+                    ? !tracer.blocked(origin, sun_direction(light, s), std::numeric_limits<double>::infinity())
+                    : !tracer.blocked(origin, sphere_light_point(light, p, s) - origin, 1.0);
+    return double(seen) / double(disc.size());
+}
+
+enum class ShadowRays { traced, skipped, area };
 
 ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles, int width, int height,
-                            ShadowRays shadow_rays) {
+                            ShadowRays shadow_rays, int samples = 0) {
     const Camera& camera = scene.camera;
     const glm::dvec3 origin = camera.position;  // the tracer's: the eye at 0
     const WorldTriangles local = relative_to(triangles, origin);
@@ -87,6 +104,10 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
     ReferenceImage image{width, height, std::vector<glm::dvec3>(pixels), std::vector<int>(pixels, -1),
                          std::vector<uint8_t>(pixels, 0), std::vector<uint8_t>(pixels, 0),
                          std::vector<float>(pixels, 0.0f)};
+    if (shadow_rays == ShadowRays::area) {
+        image.visibility.assign(pixels, 0.0f);
+        image.light_samples = int(stratified_disc(samples, 0).size());
+    }
     auto trace_row = [&](int y) {
         for (int x = 0; x < width; ++x) {
             const glm::dvec3 direction = rays.direction(x, y);
@@ -103,6 +124,9 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
             if (shadow_rays == ShadowRays::skipped) continue;
             image.lit[i] = sees_light(tracer, local_light, local_triangle, local_p);
             image.facing[i] = float(facing_light(scene.light, triangle, p, camera.position));
+            if (shadow_rays == ShadowRays::area)
+                image.visibility[i] =
+                    float(visible_share(tracer, local_light, local_triangle, local_p, samples, std::uint32_t(i)));
         }
     };
     parallel_rows([&](int first, int stride) {
@@ -115,6 +139,10 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
 
 ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height) {
     return trace_camera(scene, triangles, width, height, ShadowRays::traced);
+}
+
+ReferenceImage soft_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height, int samples) {
+    return trace_camera(scene, triangles, width, height, ShadowRays::area, samples);
 }
 
 ReferenceImage visible_points(const Scene& scene, const WorldTriangles& triangles, int width, int height) {

@@ -18,6 +18,9 @@ struct ReferenceImage {
     std::vector<uint8_t> visible;      // the primary ray meets a triangle between near and far
     std::vector<uint8_t> lit;          // visible, and no caster triangle lies between it and the light
     std::vector<float> facing;         // cos of the angle between the seen side's normal and the light: <= 0 in its own shade
+    // soft_reference only: the share of an area light each visible point sees, from light_samples rays.
+    std::vector<float> visibility;
+    int light_samples = 0;
 };
 
 // One primary ray through each pixel centre of the camera's projection (width x height pixels
@@ -30,6 +33,12 @@ struct ReferenceImage {
 // turned from the light (the ray crosses the object), while a lone plane seen from its side away
 // from the light counts as lit: the test is occlusion, as a shadow map sees it, not shading.
 ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height);
+
+// The soft shadows of an area light (Light::is_area): exact_reference's image, and per visible
+// pixel the share of the light its point sees, from `samples` stratified shadow rays over the sun's
+// disc of directions or the sphere light's disc facing the point (reference/light_samples.hpp;
+// their standard error: visibility_standard_error). A point light's share is 0 or 1.
+ReferenceImage soft_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height, int samples);
 
 // The primary rays alone: the camera's depth image (position, object, visible), its lit and facing
 // left at 0. What sample-distribution bounds read (visible_depths.hpp), for a fraction of the cost.

@@ -21,8 +21,13 @@ struct Light {
     glm::dvec3 position{0.0, 10.0, 0.0};     // spot and point lights
     double cone_deg = 60.0;                  // spot: full apex angle of the cone
     std::optional<LightRange> range;         // spot and point; none: the maps fit the scene's distances
+    // Area lights (soft shadows; 0: hard): a spot or point light as a sphere of this radius, the sun
+    // as a disc of this angular radius.
+    double radius = 0.0;
+    double angular_radius_deg = 0.0;
 
     bool is_directional() const { return type == LightType::directional; }
+    bool is_area() const { return is_directional() ? angular_radius_deg > 0.0 : radius > 0.0; }
     // The light as a homogeneous point: (position, 1), or (-direction, 0) at infinity.
     glm::dvec4 homogeneous() const {
         return is_directional() ? glm::dvec4(-direction, 0.0) : glm::dvec4(position, 1.0);

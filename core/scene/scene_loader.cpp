@@ -9,7 +9,9 @@
 //               "direction": [x,y,z],                            // directional, spot
 //               "position": [x,y,z],                             // spot, point
 //               "cone_deg": 60,                                  // spot: full apex angle
-//               "range": [near, far]},                           // spot, point: the distances lit
+//               "range": [near, far],                            // spot, point: the distances lit
+//               "radius": 0,                                     // spot, point: a sphere light (soft)
+//               "angular_radius_deg": 0},                        // directional: the sun's disc (soft)
 //   "objects": [                                                 // required, non-empty
 //     {"type": "box" | "sphere" | "plane" | "cylinder" | "mesh", "name": "<type>_<index>",
 //      "position": [x,y,z], "rotation": [degrees about x, y, z], "scale": [x,y,z] or s,
@@ -172,11 +174,12 @@ json parse_json(const std::string& text, const std::string& file) {
 
 std::vector<std::string> light_keys(LightType type) {
     switch (type) {
-        case LightType::directional: return {"type", "direction"};
+        case LightType::directional:
+            return {"type", "direction", "angular_radius_deg"};
         case LightType::spot:
-            return {"type", "direction", "position", "cone_deg", "range"};
+            return {"type", "direction", "position", "cone_deg", "range", "radius"};
         case LightType::point:
-            return {"type", "position", "range"};
+            return {"type", "position", "range", "radius"};
     }
     return {};
 }
@@ -318,6 +321,8 @@ private:
         read_field(value, path, "direction", light.direction);
         read_field(value, path, "position", light.position);
         read_field(value, path, "cone_deg", light.cone_deg);
+        read_field(value, path, "radius", light.radius);
+        read_field(value, path, "angular_radius_deg", light.angular_radius_deg);
         if (const json* range = find_field(value, "range")) {
             const std::vector<double> near_far = numbers(*range, path + ".range", 2);
             light.range = LightRange{.near = near_far[0], .far = near_far[1]};
@@ -454,6 +459,13 @@ private:
         finite(components(v), path);
         expect(largest_magnitude(v) > 0.0, path, "a non-zero direction", components(v));
     }
+    // Finite, 0 or more, below `max` (0 means off).
+    void non_negative(double value, const std::string& path, double max) const {
+        finite({value}, path);
+        std::ostringstream bound;  // 45, 1e+12: short
+        bound << max;
+        expect(value >= 0.0 && value < max, path, "a number in [0, " + bound.str() + ")", {value});
+    }
     void angle(double degrees, const std::string& path) const {
         finite({degrees}, path);
         expect(limits::within(limits::angle_deg, degrees), path,
@@ -493,6 +505,9 @@ private:
         if (light.type != LightType::point) direction(light.direction, "light.direction");
         if (light.type != LightType::directional) coordinates(light.position, "light.position");
         if (light.type == LightType::spot) angle(light.cone_deg, "light.cone_deg");
+        // Area lights: 0 is a point (hard shadows); a sun wider than 45° is no longer a sun.
+        non_negative(light.radius, "light.radius", limits::length.max);
+        non_negative(light.angular_radius_deg, "light.angular_radius_deg", 45.0);
         if (light.range) {
             positive({light.range->near, light.range->far}, "light.range", limits::length);
             if (!(light.range->far > light.range->near))
