@@ -110,8 +110,14 @@ void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
         const std::string text = map_name(setup, i) + "\n" + std::to_string(side) + "²";
         vtkNew<vtkBillboardTextActor3D> label;
         label->SetInput(text.c_str());
-        label->SetPosition(d.x, d.y, d.z);
-        label->SetDisplayOffset(6, -40);  // inside the tile, below its top edge
+        if (setup.maps[i].projection ==
+            Projection::paraboloid) {  // in the corner the disc leaves empty, under the legend
+            label->SetPosition(a.x, a.y, a.z);
+            label->SetDisplayOffset(6, 6);
+        } else {
+            label->SetPosition(d.x, d.y, d.z);
+            label->SetDisplayOffset(6, -40);  // inside the tile, below its top edge
+        }
         style_overlay_text(label->GetTextProperty(), 14, kTileBorder);
         renderer->AddViewProp(label);
     }
@@ -319,8 +325,10 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
     const std::string cross =
         n != in.resolution ? " (stored as 3 x 2, shown unfolded as a cross: +y above, -x +z +x -z across, -y below)"
                            : "";
-    add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + maps + cross +
-                              " (camera frustum in yellow; " +
+    const bool linear_maps = !std::all_of(in.setup.maps.begin(), in.setup.maps.end(),
+                                          [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
+    add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + maps + cross + " (" +
+                              (linear_maps ? "camera frustum in yellow; " : "") +
                               (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
                               "texel grid when zoomed in)" + sagittas);
     return report;
