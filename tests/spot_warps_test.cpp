@@ -68,6 +68,12 @@ std::vector<glm::dvec3> visible_points_in_cone(const ShadowInputs& in) {
 
 class SpotWarp : public ::testing::TestWithParam<std::string> {};
 
+// The method's error with its default settings, slope-scaled bias, at `resolution`.
+ShadowError measured(const MeasureContext& context, const std::string& name, int resolution) {
+    const Method& m = method_or_throw(name);
+    return measure(context, m, resolve_settings(name, m.settings, {}), resolution, -1.0).error;
+}
+
 }  // namespace
 
 TEST_P(SpotWarp, WarpsWithoutFallback) {
@@ -133,11 +139,8 @@ INSTANTIATE_TEST_SUITE_P(PsmAndLispsm, SpotWarp, ::testing::Values("psm", "lisps
 // a directional light.)
 TEST(SpotWarps, LispsmBeatsTheFocusedMapOnPerspectiveAliasingUnderAStreetLamp) {
     const MeasureContext context = prepare_measurement(street_lamp(), 320, 180);
-    const auto perspective_m = [&](const std::string& name) {
-        const Method& m = method_or_throw(name);
-        return measure(context, m, resolve_settings(name, m.settings, {}), 512, -1.0).error.m_perspective;
-    };
-    const AliasingStats focused = perspective_m("focused"), lispsm = perspective_m("lispsm");
+    const AliasingStats focused = measured(context, "focused", 512).m_perspective,
+                        lispsm = measured(context, "lispsm", 512).m_perspective;
     EXPECT_LT(lispsm.p95, focused.p95);
     EXPECT_LT(lispsm.mean, focused.mean);
 }
@@ -181,11 +184,8 @@ TEST(SpotWarps, PsmPutsTheSpotInPostPerspectiveSpace) {
 // depth over the light's (t / z) varies across the map, still gains a little over the focused map.
 TEST(SpotWarps, LispsmBeatsTheFocusedMapOnPerspectiveAliasingInTheSpotScene) {
     const MeasureContext context = prepare_measurement(spot_scene(), 640, 360);
-    const auto perspective_m = [&](const std::string& name) {
-        const Method& m = method_or_throw(name);
-        return measure(context, m, resolve_settings(name, m.settings, {}), 1024, -1.0).error.m_perspective;
-    };
-    const AliasingStats focused = perspective_m("focused"), lispsm = perspective_m("lispsm");
+    const AliasingStats focused = measured(context, "focused", 1024).m_perspective,
+                        lispsm = measured(context, "lispsm", 1024).m_perspective;
     EXPECT_LT(lispsm.p95, focused.p95);
     EXPECT_LT(lispsm.max, focused.max);
 }
@@ -195,13 +195,9 @@ TEST(SpotWarps, LispsmBeatsTheFocusedMapOnPerspectiveAliasingInTheSpotScene) {
 // stacks on the camera's: its perspective part alone is worse, see the README).
 TEST(SpotWarps, BothWarpsBeatTheFocusedMapOnLloydsM) {
     const MeasureContext context = prepare_measurement(spot_scene(), 640, 360);
-    const auto lloyds_m = [&](const std::string& name) {
-        const Method& m = method_or_throw(name);
-        return measure(context, m, resolve_settings(name, m.settings, {}), 1024, -1.0).error.m;
-    };
-    const AliasingStats focused = lloyds_m("focused");
+    const AliasingStats focused = measured(context, "focused", 1024).m;
     for (const char* warp : {"psm", "lispsm"}) {
-        const AliasingStats warped = lloyds_m(warp);
+        const AliasingStats warped = measured(context, warp, 1024).m;
         EXPECT_LT(warped.mean, focused.mean) << warp;
         EXPECT_LT(warped.p95, focused.p95) << warp;
     }
