@@ -11,6 +11,7 @@
 #include "test_support.hpp"
 
 using namespace shadowlab;
+using namespace shadowlab::testing;
 
 namespace {
 
@@ -167,8 +168,9 @@ TEST(AtlasRaster, ParaboloidHemispheresClipAtTheirPlane) {
     EXPECT_NEAR(depth.at(16, 16), (std::sqrt(18.0) - 1.0) / 10.0, 1e-6);
     for (int y = 0; y < n / 2; ++y)
         for (int x = n / 2; x < n; ++x) ASSERT_EQ(depth.at(x, y), 1.0f) << "the upper hemisphere sees nothing";
-    EXPECT_TRUE(in_shadow(depth, setup, {0.2, -3.0, 0.1}, 0.05));
-    EXPECT_FALSE(in_shadow(depth, setup, {0.2, 2.0, 0.1}, 0.05)) << "between the light and the caster";
+    const Light lamp{.type = LightType::point, .position = {0, 5, 0}};
+    EXPECT_TRUE(in_shadow(depth, setup, {0.2, -3.0, 0.1}, 0.05, lamp));
+    EXPECT_FALSE(in_shadow(depth, setup, {0.2, 2.0, 0.1}, 0.05, lamp)) << "between the light and the caster";
 }
 
 namespace {
@@ -214,18 +216,20 @@ TEST(MapBlend, WeightRisesLinearlyOverTheLastShareOfTheSplit) {
     EXPECT_EQ(blend_of(tiles, {1.4, 0, 0}).next, -1);
 }
 
-// In the band the amount is the crossfade of the two maps' verdicts, each with its own bias, and
-// in_shadow thresholds it at one half.
+// In the band the visibility is the crossfade of the two maps' verdicts, and a pixel is shadowed
+// below one half of it.
 TEST(MapBlend, AmountCrossfadesTheTwoVerdicts) {
     const ShadowSetup setup = fine_then_coarse(0.5);  // band from x = 0
     const DepthMap depth = rasterize_depth(half_plane_caster(), {true}, setup, 64);
-    const MapBias only_map_0_sees_it = [](int map) { return map == 0 ? 0.01 : 2.0; };  // map 1 biased past the caster
+    DepthMap only_map_0_sees_it = depth;  // map 1's tile (the texture's right half, top) emptied
+    for (int y = 0; y < 32; ++y)
+        for (int x = 32; x < 64; ++x) only_map_0_sees_it.depth[size_t(y) * 64 + x] = 1.0f;
     for (double x : {-0.5, 0.3, 0.75, 1.2}) {
         const glm::dvec3 p(x, 0, -1);
         const double w = blend_of(setup, p).weight;
-        EXPECT_NEAR(shadow_amount(depth, setup, p, only_map_0_sees_it), 1.0 - w, 1e-12) << x;
-        EXPECT_EQ(in_shadow(depth, setup, p, only_map_0_sees_it), 1.0 - w >= 0.5) << x;
-        EXPECT_EQ(shadow_amount(depth, setup, p, [](int) { return 0.01; }), 1.0) << "both maps see the caster";
+        EXPECT_NEAR(constant_bias_visibility(only_map_0_sees_it, setup, p, 0.01), w, 1e-12) << x;
+        EXPECT_EQ(in_shadow(only_map_0_sees_it, setup, p, 0.01), w < 0.5) << x;
+        EXPECT_EQ(constant_bias_visibility(depth, setup, p, 0.01), 0.0) << "both maps see the caster";
     }
 }
 
@@ -238,9 +242,9 @@ TEST(MapBlend, TheBandRemovesTheSeamStep) {
         const DepthMap depth = rasterize_depth(half_plane_caster(), {true}, setup, 64);
         double largest = 0.0;
         for (double z = 0.0; z <= 0.6; z += 0.02) {  // lines along x across the boundary, near the shadow's edge
-            double before = shadow_amount(depth, setup, {-1.0, 0, z}, [](int) { return 0.01; });
+            double before = constant_bias_visibility(depth, setup, {-1.0, 0, z}, 0.01);
             for (double x = -1.0 + step; x <= 3.0; x += step) {
-                const double amount = shadow_amount(depth, setup, {x, 0, z}, [](int) { return 0.01; });
+                const double amount = constant_bias_visibility(depth, setup, {x, 0, z}, 0.01);
                 largest = std::max(largest, std::abs(amount - before));
                 before = amount;
             }

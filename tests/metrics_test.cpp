@@ -43,7 +43,8 @@ ShadowError measure(const Scene& scene, const std::string& method, int resolutio
     const WorldTriangles triangles = tessellate(scene);
     const ReferenceImage reference = exact_reference(scene, triangles, pixels, pixels);
     const DepthMap depth = rasterize_depth(triangles, caster_flags(scene), setup, resolution);
-    return measure_shadow_error(scene, reference, depth, setup, 0.05);
+    const ShadowReader reader(setup, depth, scene.light, {.bias = {.constant = 0.05, .slope_scale = 0.0}});
+    return measure_shadow_error(scene, reference, reader, receiver_visibility(scene, reference, reader));
 }
 
 // A 100 x 20 ground (long along x) under a camera 20 units up looking straight down, lit from

@@ -7,8 +7,10 @@
 
 #include "maps/map_lookup.hpp"
 #include "raster/depth_map.hpp"
+#include "test_support.hpp"
 
 using namespace shadowlab;
+using namespace shadowlab::testing;
 
 namespace {
 

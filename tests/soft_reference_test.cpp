@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "reference/exact_shadows.hpp"
 #include "reference/light_samples.hpp"
@@ -14,37 +13,7 @@
 
 using namespace shadowlab;
 
-namespace {
-
-// The share of a unit disc on the far side of the chord at u (u = -1: all of it, 1: none).
-double disc_share_beyond(double u) {
-    u = std::clamp(u, -1.0, 1.0);
-    return (std::acos(u) - u * std::sqrt(1.0 - u * u)) / std::numbers::pi;
-}
-
-// A sphere light of radius 0.25 (w_light = 0.5) at height 5 over the ground, a thin blocker at
-// height 3 covering x < 0 (d_b = 2, d_r = 5), seen straight down from height 1 in a strip across
-// the edge.
-Scene edge_under_a_sphere_light() {
-    Scene scene;
-    scene.objects.push_back({.name = "ground", .shape = Shape::plane, .size = {40.0, 1.0, 40.0}, .casts = false});
-    scene.objects.push_back({.name = "blocker",
-                             .shape = Shape::plane,
-                             .position = {-10.0, 3.0, 0.0},
-                             .size = {20.0, 1.0, 40.0},
-                             .receives = false});
-    scene.light = {.type = LightType::point, .position = {0.0, 5.0, 0.0}, .radius = 0.25};
-    scene.camera = {.position = {0.0, 1.0, 0.0},
-                    .target = {0.0, 0.0, 0.0},
-                    .up = {0.0, 0.0, -1.0},
-                    .fov_y_deg = 7.0,
-                    .aspect = 10.0,
-                    .near = 0.1,
-                    .far = 10.0};
-    return scene;
-}
-
-}  // namespace
+using namespace shadowlab::testing;
 
 TEST(LightSamples, StratifiedSamplesCoverTheDiscEvenly) {
     const std::vector<glm::dvec2> disc = stratified_disc(1000, 7);

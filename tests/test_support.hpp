@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <optional>
 
+#include "lookup/shadow_reader.hpp"
 #include "maps/map_lookup.hpp"
 #include "registry/method.hpp"
 #include "scene/scene.hpp"
@@ -70,6 +72,47 @@ inline bool has_note(const std::vector<Note>& notes, NoteKind kind) {
 }
 
 // (u, v, d) of a world point under the map the setup picks for it (any number of maps).
+// The share of a unit disc on the far side of the chord at u (u = -1: all of it, 1: none).
+inline double disc_share_beyond(double u) {
+    u = std::clamp(u, -1.0, 1.0);
+    return (std::acos(u) - u * std::sqrt(1.0 - u * u)) / std::numbers::pi;
+}
+
+// A sphere light of radius 0.25 (w_light = 0.5) at height 5 over the ground, a thin blocker at
+// height 3 covering x < 0 (d_b = 2, d_r = 5), seen straight down from height 1 in a strip across
+// the edge.
+inline Scene edge_under_a_sphere_light() {
+    Scene scene;
+    scene.objects.push_back({.name = "ground", .shape = Shape::plane, .size = {40.0, 1.0, 40.0}, .casts = false});
+    scene.objects.push_back({.name = "blocker",
+                             .shape = Shape::plane,
+                             .position = {-10.0, 3.0, 0.0},
+                             .size = {20.0, 1.0, 40.0},
+                             .receives = false});
+    scene.light = {.type = LightType::point, .position = {0.0, 5.0, 0.0}, .radius = 0.25};
+    scene.camera = {.position = {0.0, 1.0, 0.0},
+                    .target = {0.0, 0.0, 0.0},
+                    .up = {0.0, 0.0, -1.0},
+                    .fov_y_deg = 7.0,
+                    .aspect = 10.0,
+                    .near = 0.1,
+                    .far = 10.0};
+    return scene;
+}
+
+// The hard lookup of point p with a constant bias (world units along the light) and no other:
+// visibility 0..1 (a blend band crossfades two maps). The light only orients the bias: straight
+// down by default.
+inline double constant_bias_visibility(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& p,
+                                       double bias, const Light& light = Light{.direction = {0, -1, 0}}) {
+    const ShadowReader reader(setup, depth, light, {.bias = {.constant = bias, .slope_scale = 0.0}});
+    return reader.visibility({.position = p, .normal = -light.direction});
+}
+inline bool in_shadow(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& p, double bias,
+                      const Light& light = Light{.direction = {0, -1, 0}}) {
+    return constant_bias_visibility(depth, setup, p, bias, light) < 0.5;
+}
+
 inline std::optional<glm::dvec3> setup_uvz(const ShadowSetup& setup, const glm::dvec3& p) {
     const std::optional<MapPoint> at = map_point(setup, p);
     if (!at) return std::nullopt;

@@ -187,19 +187,33 @@ ShadowSetup relative_to(ShadowSetup setup, const glm::dvec3& origin) {
     return setup;
 }
 
-double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
-    double slope = 0.0;
+double depth_slope(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
     if (map.projection == Projection::paraboloid) {  // d = (|q| - near) / (far - near)
         const Paraboloid& pb = map.paraboloid;
         const glm::dvec3 q = pb.frame_from_world * (p - pb.centre);
-        slope = glm::dot(glm::normalize(q), pb.frame_from_world * l) / (pb.far - pb.near);
-    } else {
-        const glm::dmat4& m = map.world_to_uvz;
-        const glm::dvec4 h = m * glm::dvec4(p, 1.0);
-        const double a = glm::dot(glm::dvec3(m[0][2], m[1][2], m[2][2]), l);  // d_pre's slope along l
-        const double c = glm::dot(glm::dvec3(m[0][3], m[1][3], m[2][3]), l);  // w's slope along l
-        slope = (a * h.w - h.z * c) / (h.w * h.w);
+        return glm::dot(glm::normalize(q), pb.frame_from_world * l) / (pb.far - pb.near);
     }
+    const glm::dmat4& m = map.world_to_uvz;
+    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+    const double a = glm::dot(glm::dvec3(m[0][2], m[1][2], m[2][2]), l);  // d_pre's slope along l
+    const double c = glm::dot(glm::dvec3(m[0][3], m[1][3], m[2][3]), l);  // w's slope along l
+    return (a * h.w - h.z * c) / (h.w * h.w);                              // the quotient rule on d_pre / w
+}
+
+double distance_back_to_depth(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p, double depth) {
+    if (map.projection == Projection::paraboloid) {  // back along a radial ray, d falls by 1 / (far - near) per unit
+        const double d = world_to_uvz(map, p).z;
+        return (d - depth) * (map.paraboloid.far - map.paraboloid.near);
+    }
+    // At p - s l the map holds (h.z - s dh.z) / (h.w - s dh.w); set it to `depth` and solve for s.
+    const glm::dvec4 h = map.world_to_uvz * glm::dvec4(p, 1.0);
+    const glm::dvec4 dh = map.world_to_uvz * glm::dvec4(l, 0.0);
+    const double s = (h.z - depth * h.w) / (dh.z - depth * dh.w);
+    return std::isfinite(s) && s >= 0.0 ? s : INFINITY;
+}
+
+double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
+    const double slope = depth_slope(map, l, p);
     return slope > 0.0 ? 1.0 / slope : INFINITY;
 }
 

@@ -77,6 +77,16 @@ glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::d
 // passes) draws with near the camera, however far the scene stands from the world's origin.
 ShadowSetup relative_to(ShadowSetup setup, const glm::dvec3& origin);
 
+// ∂d/∂t: the map's depth (after the division) per world unit along `direction` at p. Exact for
+// linear maps and cube faces (the quotient rule on the matrix rows) and for paraboloids (d grows
+// with the distance to the centre).
+double depth_slope(const ShadowMap& map, const glm::dvec3& direction, const glm::dvec3& p);
+
+// How far from p back toward the light (against `direction`, the way light travels) the map's depth
+// falls to `depth`: exact for every projection (a linear map's depth is a linear fraction of the
+// distance along a ray, a paraboloid's linear in it). Infinite where the ray never reaches it.
+double distance_back_to_depth(const ShadowMap& map, const glm::dvec3& direction, const glm::dvec3& p, double depth);
+
 // World units along the light per unit at p under one map: 1 / (dd / dt), d the
 // divided depth, t the distance along `light_direction`.
 double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& light_direction, const glm::dvec3& p);

@@ -35,10 +35,19 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     const ShadowSetup setup = timed_setup(c, method, settings, m.setup_ms);
     m.fallbacks = setup.fallbacks;
     for (const ShadowMap& map : setup.maps) m.texels_used += std::pow(tile_resolution(map, resolution), 2);
-    const Stopwatch watch;
+    const Stopwatch raster_watch;
     const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
-    m.raster_ms = watch.ms();
-    m.error = measure_shadow_error(c.scene, c.reference, depth, setup, m.bias);
+    m.raster_ms = raster_watch.ms();
+    m.lookup = lookup_from(settings, bias);
+    const ShadowReader reader(setup, depth, c.scene.light, m.lookup);
+    m.prefilter_ms = reader.prefilter_ms();
+    LookupCount count;
+    const Stopwatch lookup_watch;
+    const std::vector<float> visibility = receiver_visibility(c.scene, c.reference, reader, &count);
+    m.lookup_ms = lookup_watch.ms();
+    m.error = measure_shadow_error(c.scene, c.reference, reader, visibility);
+    m.taps_per_pixel = m.error.receiver_pixels ? double(count.taps) / double(m.error.receiver_pixels) : 0.0;
+    for (Note& note : reader.fallbacks(count)) m.fallbacks.push_back(std::move(note));
     if (setup.maps.size() > 1) m.by_map = break_down_by_map(c.reference, m.error, setup);
     return m;
 }
@@ -57,10 +66,10 @@ Measurement measure_geometry(const MeasureContext& c, const Method& method, cons
 
 }  // namespace
 
-MeasureContext prepare_measurement(const Scene& scene, int width, int height) {
+MeasureContext prepare_measurement(const Scene& scene, int width, int height, int light_samples) {
     MeasureContext c{scene, object_boxes(scene), tessellate(scene), caster_flags(scene), {}};
     const glm::ivec2 image = image_size_within(scene.camera, width, height);
-    c.reference = exact_reference(scene, c.triangles, image.x, image.y);
+    c.reference = light_reference(scene, c.triangles, image.x, image.y, light_samples);
     return c;
 }
 

@@ -22,16 +22,22 @@ struct MeasureContext {
 };
 
 // The reference of the largest image of the camera's aspect within width x height (image_size_within):
-// context.reference.width and .height say which.
-MeasureContext prepare_measurement(const Scene& scene, int width, int height);
+// context.reference.width and .height say which. With an area light it is the soft reference from
+// `light_samples` rays per pixel (its lit verdicts still from the light's centre).
+MeasureContext prepare_measurement(const Scene& scene, int width, int height, int light_samples = kDefaultLightSamples);
 
 struct Measurement {
     std::string method;
     int resolution = 0;  // 0 for a technique without a map
     double texels_used = 0.0;  // maps: the texels the setup's tiles hold (an atlas may leave part of the texture empty)
-    double bias = -1.0;  // world units; negative: slope-scaled per pixel
+    double bias = -1.0;  // world units, replacing the settings' bias; negative: the settings' (lookup.bias)
     ShadowError error;
     double setup_ms = 0.0, raster_ms = 0.0;
+    // maps: how the lookups read them, what that cost: the moments' blur (vsm, evsm) and the lookups
+    // of every receiver pixel (wall time on every core), texel reads per receiver pixel.
+    ShadowLookup lookup;
+    double prefilter_ms = 0.0, lookup_ms = 0.0;
+    double taps_per_pixel = 0.0;
     std::vector<Note> fallbacks;           // maps: the degradations taken
     std::vector<Note> limits;              // geometric techniques: the limits met
     std::optional<GeometryCost> geometry;  // geometric techniques only: polygons drawn, fragments per pixel
@@ -42,8 +48,9 @@ struct Measurement {
 };
 
 // One method against the reference. A map method: its setup (the fastest of a few runs), its maps
-// rasterized at `resolution` texels per side of the texture, judged with `bias` (world units along
-// the light; negative: slope-scaled per pixel, slope_scaled_bias). A geometric technique: the cost
+// rasterized at `resolution` texels per side of the texture, read with the settings' filter and
+// bias (lookup/lookup_settings.hpp; a constant `bias` >= 0, the CLI's --bias, replaces the bias
+// settings). A geometric technique: the cost
 // of building its geometry (setup) and of judging the pixels (raster), its polygons and fill;
 // resolution and bias do not apply.
 Measurement measure(const MeasureContext& context, const Method& method, const Settings& settings, int resolution,

@@ -3,28 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lookup/depth_bias.hpp"
+#include "math/parallel_rows.hpp"
+#include "math/singular_values.hpp"
+
 namespace shadowlab {
 
 double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, const glm::dvec2& uv_down,
                               double resolution) {
-    const glm::dmat2 j(uv_right - uv, uv_down - uv);  // columns: per pixel right, per pixel down
-    // Smallest singular value of a 2x2 matrix from its Frobenius norm and determinant.
-    const double f = glm::dot(j[0], j[0]) + glm::dot(j[1], j[1]), det = std::abs(glm::determinant(j));
-    const double sigma_min = std::sqrt(std::max(0.0, (f - std::sqrt(std::max(0.0, f * f - 4 * det * det))) / 2));
+    const double sigma_min = smallest_singular_value(glm::dmat2(uv_right - uv, uv_down - uv));  // per pixel right, down
     return sigma_min > 0.0 ? 1.0 / (resolution * sigma_min) : INFINITY;
-}
-
-double slope_scaled_bias(const ShadowMap& map, double texels, const glm::dvec3& l, const glm::dvec3& p,
-                         double cos_theta) {
-    // Two directions across the light, and how far (u, v) moves along each per world unit: the
-    // texel's extent in world units (derivatives, not differences: no step size to tie to a scale).
-    const glm::dvec3 a = glm::normalize(glm::cross(l, std::abs(l.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
-    const glm::dvec3 b = glm::cross(l, a);
-    const glm::dvec2 uv(world_to_uvz(map, p));
-    const double extent =
-        texel_extent_in_pixels(uv, uv + uv_derivative(map, p, a), uv + uv_derivative(map, p, b), texels);
-    const double tan_theta = std::min(10.0, std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta)) / std::max(cos_theta, 1e-6));
-    return extent * (1.0 + tan_theta);
 }
 
 namespace {
@@ -34,17 +22,6 @@ glm::dvec3 along_light(const Light& light, const glm::dvec3& p) {
 }
 
 }  // namespace
-
-MapBias bias_at(const ShadowSetup& setup, int texture_resolution, const Light& light, const glm::dvec3& p,
-                double cos_theta, double bias) {
-    if (bias >= 0.0) return [bias](int) { return bias; };
-    return [&setup, texture_resolution, light_direction = along_light(light, p), p, cos_theta](int which) {
-        const ShadowMap& map = setup.maps[which];
-        const double slope_scaled =
-            slope_scaled_bias(map, tile_resolution(map, texture_resolution), light_direction, p, cos_theta);
-        return std::isfinite(slope_scaled) ? slope_scaled : 0.0;
-    };
-}
 
 namespace {
 
@@ -164,27 +141,45 @@ AliasingStats statistics(std::vector<double> values) {
     return s;
 }
 
-ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, const DepthMap& depth,
-                                 const ShadowSetup& setup, double bias) {
+std::vector<float> receiver_visibility(const Scene& scene, const ReferenceImage& ref, const ShadowReader& reader,
+                                       LookupCount* count) {
+    std::vector<float> visibility(ref.visible.size(), -1.0f);
+    std::vector<LookupCount> counts(row_threads());  // one per thread
+    parallel_rows([&](int first, int stride) {
+        for (int y = first; y < ref.height; y += stride)
+            for (int x = 0; x < ref.width; ++x)
+                if (const size_t i = size_t(y) * ref.width + x; receives(scene, ref, i))
+                    visibility[i] = float(reader.visibility(
+                        {.position = ref.position[i], .normal = ref.normal[i], .rotation = pixel_rotation(x, y)},
+                        &counts[first]));
+    });
+    if (count)
+        for (const LookupCount& c : counts) {
+            count->lookups += c.lookups;
+            count->taps += c.taps;
+            count->searches_clamped += c.searches_clamped;
+        }
+    return visibility;
+}
+
+ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, const ShadowReader& reader,
+                                 const std::vector<float>& visibility) {
     ShadowError e = unjudged(ref);
+    const ShadowSetup& setup = reader.setup();
     std::vector<double> ms, perspectives, projections, depth_steps;
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
             const size_t i = size_t(y) * ref.width + x;
             if (!receives(scene, ref, i)) continue;
+            judge(e, ref, i, visibility[i] < 0.5f);
             const glm::dvec3& p = ref.position[i];
             const int which = select_map(setup, p);
-            if (which < 0) {  // no map for this point: lit
-                judge(e, ref, i, false);
-                continue;
-            }
+            if (which < 0) continue;  // no map for this point: lit, no texels
             const ShadowMap& map = setup.maps[which];
-            const double texels = tile_resolution(map, depth.resolution);
-            judge(e, ref, i, in_shadow(depth, setup, p, bias_at(setup, depth.resolution, scene.light, p, ref.facing[i], bias)));
             if (const double step = world_per_depth_unit(map, along_light(scene.light, p), p) / kDepthBufferSteps;
                 std::isfinite(step))
                 depth_steps.push_back(step);
-            const PixelAliasing a = pixel_aliasing(scene, ref, map, texels, x, y);
+            const PixelAliasing a = pixel_aliasing(scene, ref, map, tile_resolution(map, reader.depth().resolution), x, y);
             if (a.m > 0.0) {
                 e.m_image[i] = float(a.m);
                 ms.push_back(a.m);
@@ -201,14 +196,20 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
     e.m_perspective = statistics(std::move(perspectives));
     e.m_projection = statistics(std::move(projections));
     e.depth_step = statistics(std::move(depth_steps));
+    e.visibility = visibility_error(ref, visibility);
     return e;
 }
 
 ShadowError judge_shadows(const Scene& scene, const ReferenceImage& ref, const std::vector<uint8_t>& shadowed) {
     ShadowError e = unjudged(ref);
+    std::vector<float> visibility(shadowed.size(), -1.0f);
     for (size_t i = 0; i < shadowed.size(); ++i)
-        if (receives(scene, ref, i)) judge(e, ref, i, shadowed[i] != 0);
+        if (receives(scene, ref, i)) {
+            judge(e, ref, i, shadowed[i] != 0);
+            visibility[i] = shadowed[i] ? 0.0f : 1.0f;
+        }
     tally(e);
+    e.visibility = visibility_error(ref, std::move(visibility));
     return e;
 }
 

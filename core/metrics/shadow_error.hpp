@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "maps/map_lookup.hpp"
+#include "lookup/shadow_reader.hpp"
+#include "metrics/visibility_error.hpp"
 #include "raster/depth_map.hpp"
 #include "reference/exact_shadows.hpp"
 
@@ -49,30 +51,22 @@ struct ShadowError {
     // Per pixel; 0 where not measured.
     std::vector<float> m_image, m_perspective_image, m_projection_image;
     std::vector<PixelVerdict> verdicts;   // per pixel
+    VisibilityError visibility;           // against the reference's visibility (soft where traced)
 };
 
-// `bias` in world units along the light; a negative bias asks for the slope-scaled one below. Each
-// pixel is judged by the map the setup's selection gives it; m counts that map's texels.
-ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& reference, const DepthMap& depth,
-                                 const ShadowSetup& setup, double bias);
+// The visibility of every receiver pixel under the reader's maps (-1 elsewhere): the lookups,
+// alone, so that their cost can be timed; `count` sums their taps.
+std::vector<float> receiver_visibility(const Scene& scene, const ReferenceImage& reference, const ShadowReader& reader,
+                                       LookupCount* count = nullptr);
+
+// The reader's maps judged against the reference from those visibilities: a pixel is shadowed
+// below one half. Each pixel's m counts the texels of the map the setup's selection gives it.
+ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& reference, const ShadowReader& reader,
+                                 const std::vector<float>& visibility);
 
 // The same judgement of a technique without texels (shadow volumes, planar projection): its
 // per-pixel verdicts (1: shadowed) against the reference; m and depth_step stay 0.
 ShadowError judge_shadows(const Scene& scene, const ReferenceImage& reference, const std::vector<uint8_t>& shadowed);
-
-// The bias a texel needs at p, as engines' slope-scaled bias: the texel's world size across the
-// light times (1 + tan θ), θ between the surface and the light (tan clamped to 10), so that the
-// surface within one texel never rises above its own stored depth. `texels` across the map's tile
-// (tile_resolution).
-double slope_scaled_bias(const ShadowMap& map, double texels, const glm::dvec3& light_direction,
-                         const glm::dvec3& p, double cos_theta);
-
-// The bias each map of the setup is judged with at p: `bias` when it is >= 0, else that map's own
-// slope-scaled bias (0 where it is not finite): inside a cascades' blend band both maps judge p,
-// each with its own. The GPU pass applies the same. The result refers to `setup`: use it while
-// the setup lives.
-MapBias bias_at(const ShadowSetup& setup, int texture_resolution, const Light& light, const glm::dvec3& p,
-                double cos_theta, double bias);
 
 // m at one pixel from the map coordinates of it and its neighbours one pixel right and down:
 // J = d(u, v)/d(pixel); a texel (1/N wide in u and v) spans 1 / (N σ_min(J)) pixels at most.

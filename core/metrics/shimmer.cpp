@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "math/parallel_rows.hpp"
+#include "lookup/shadow_reader.hpp"
 #include "raster/depth_map.hpp"
 #include "reference/visible_depths.hpp"
 
@@ -17,17 +18,17 @@ bool in_view(const glm::dmat4& clip_from_world, const glm::dvec3& p) {
 
 constexpr signed char kNotJudged = -1;
 
-// Each sample's verdict under the frame's maps: 1 in shadow, 0 lit, kNotJudged outside the view.
-std::vector<signed char> verdicts(const MeasureContext& c, const std::vector<ShimmerSample>& samples,
-                                  const Camera& camera, const ShadowSetup& setup, const DepthMap& depth,
-                                  int resolution, double bias) {
+// Each sample's verdict under the frame's maps: 1 in shadow (visibility below one half), 0 lit,
+// kNotJudged outside the view.
+std::vector<signed char> verdicts(const std::vector<ShimmerSample>& samples, const Camera& camera,
+                                  const ShadowReader& reader) {
     const glm::dmat4 clip_from_world = camera.projection_matrix() * camera.view_matrix();
     std::vector<signed char> out(samples.size(), kNotJudged);
     parallel_rows([&](int first, int stride) {
         for (size_t i = first; i < samples.size(); i += stride) {
             const ShimmerSample& s = samples[i];
             if (!in_view(clip_from_world, s.position)) continue;
-            out[i] = in_shadow(depth, setup, s.position, bias_at(setup, resolution, c.scene.light, s.position, s.facing, bias));
+            out[i] = reader.visibility({.position = s.position, .normal = s.normal}) < 0.5;
         }
     });
     return out;
@@ -54,7 +55,7 @@ std::vector<ShimmerSample> shimmer_samples(const MeasureContext& c) {
     std::vector<ShimmerSample> samples;
     for (size_t i = 0; i < ref.visible.size(); ++i)
         if (ref.visible[i] && ref.facing[i] > 0.0f && c.scene.objects[ref.object[i]].receives)
-            samples.push_back({ref.position[i], ref.facing[i], ref.lit[i] != 0});
+            samples.push_back({ref.position[i], ref.normal[i], ref.lit[i] != 0});
     return samples;
 }
 
@@ -76,13 +77,15 @@ Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample
                         const Settings& settings, int resolution, double bias, const CameraPath& path) {
     if (!method.makes_maps())
         throw std::invalid_argument("shimmer: " + method.name + " is a geometric technique: it has no map to shimmer");
+    const ShadowLookup lookup = lookup_from(settings, bias);
     Shimmer shimmer;
     std::vector<signed char> before;
     for (int frame = 0; frame < path.frames; ++frame) {
         const Camera camera = camera_at(c.scene.camera, path, frame);
         const ShadowSetup setup = method.compute_maps(frame_inputs(c, method, settings, camera), settings, nullptr);
         const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
-        const std::vector<signed char> now = verdicts(c, samples, camera, setup, depth, resolution, bias);
+        const ShadowReader reader(setup, depth, c.scene.light, lookup);
+        const std::vector<signed char> now = verdicts(samples, camera, reader);
         FrameShimmer f{.frame = frame, .fallbacks = setup.fallbacks};
         for (size_t i = 0; i < samples.size(); ++i) {
             if (now[i] == kNotJudged) continue;

@@ -15,7 +15,7 @@ namespace shadowlab {
 // verdict for it.
 struct ShimmerSample {
     glm::dvec3 position;
-    double facing = 0.0;  // cos of the angle between its normal and the light
+    glm::dvec3 normal;    // unit, the side the camera sees
     bool lit = false;
 };
 
@@ -40,8 +40,8 @@ struct Shimmer {
 };
 
 // Follows `path` from the context's camera, building the method's maps at `resolution` for every
-// frame and judging `samples` with `bias` (world units along the light; negative: slope-scaled per
-// point, as measure does). Throws std::invalid_argument for a geometric technique: it has no map.
+// frame and judging `samples` as the settings' filter and bias say (a constant `bias` >= 0 replaces
+// the bias settings, as measure does). Throws std::invalid_argument for a geometric technique: it has no map.
 Shimmer measure_shimmer(const MeasureContext& context, const std::vector<ShimmerSample>& samples, const Method& method,
                         const Settings& settings, int resolution, double bias, const CameraPath& path);
 

@@ -30,6 +30,9 @@ enum class NoteKind {
     light_on_region,
     warp_not_needed,
     no_light_axis,
+    // Fallbacks of the lookups' filters.
+    light_without_size,
+    search_clamped,
     // Limits of the geometric techniques (shadow volumes, planar projection).
     open_mesh,
     eye_in_volume,

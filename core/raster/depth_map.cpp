@@ -133,25 +133,4 @@ DepthMap rasterize_depth(const WorldTriangles& triangles, const std::vector<bool
     return out;
 }
 
-double shadow_amount(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& world_point, const MapBias& bias) {
-    const auto shadow_of = [&](int map) {
-        const std::optional<MapLookup> at = look_up_in(setup, map, world_point, bias(map));
-        if (!at) return 0.0;
-        const glm::ivec2 texel = texel_of(setup.maps[map], at->uv, depth.resolution);
-        return at->depth > depth.at(texel.x, texel.y) ? 1.0 : 0.0;
-    };
-    const MapBlend blend = blend_of(setup, world_point);
-    if (blend.map < 0) return 0.0;
-    if (blend.next < 0) return shadow_of(blend.map);
-    return (1.0 - blend.weight) * shadow_of(blend.map) + blend.weight * shadow_of(blend.next);
-}
-
-bool in_shadow(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& world_point, const MapBias& bias) {
-    return shadow_amount(depth, setup, world_point, bias) >= 0.5;
-}
-
-bool in_shadow(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& world_point, double bias) {
-    return in_shadow(depth, setup, world_point, [bias](int) { return bias; });
-}
-
 }  // namespace shadowlab

@@ -1,7 +1,6 @@
 #pragma once
-// A deterministic CPU depth rasterizer for shadow maps, and the shadow lookup that reads its result.
+// A deterministic CPU depth rasterizer for shadow maps (lookup/shadow_reader.hpp reads its result).
 // One texture holds every map of a setup, each in its tile (ShadowMap::viewport).
-#include <functional>
 #include <vector>
 #include <glm/glm.hpp>
 
@@ -28,20 +27,5 @@ struct DepthMap {
 // map's near plane (d < 0) still cast and are stored as 0, as with a clamped GPU depth range.
 DepthMap rasterize_depth(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
                          const ShadowSetup& setup, int resolution);
-
-// The bias (world units along the light) a map of the setup needs at the point being judged: one
-// constant, or each map's own slope-scaled bias (a coarser map needs more).
-using MapBias = std::function<double(int map)>;
-
-// How shadowed a world point is, 0 (lit) to 1. One map's verdict is 1 or 0: its nearest texel
-// against the point's depth, the bias applied before the division: d = (d_pre - z_bias_scale *
-// bias) / w; a map that does not cover the point (look_up_in gives none) says lit. Inside a blend
-// band (blend_of) the two maps' verdicts are crossfaded: (1 - w) shadow_i + w shadow_{i+1}.
-double shadow_amount(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& world_point, const MapBias& bias);
-
-// The binary verdict the metrics judge: shadow_amount >= 1/2 (without a band: the one map's verdict).
-bool in_shadow(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& world_point, const MapBias& bias);
-// The same bias for every map.
-bool in_shadow(const DepthMap& depth, const ShadowSetup& setup, const glm::dvec3& world_point, double bias);
 
 }  // namespace shadowlab

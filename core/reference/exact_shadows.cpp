@@ -63,11 +63,14 @@ bool sees_light(const RayTracer& tracer, const Light& light, const std::array<gl
     return !tracer.blocked(origin, light.position - origin, 1.0);  // t = 1 at the light
 }
 
-// cos of the angle between the light and the normal of the triangle's side seen from `eye`.
-double facing_light(const Light& light, const std::array<glm::dvec3, 3>& triangle, const glm::dvec3& p,
-                    const glm::dvec3& eye) {
-    glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
-    if (glm::dot(normal, eye - p) < 0.0) normal = -normal;
+// The unit normal of the triangle's side seen from `eye`.
+glm::dvec3 seen_normal(const std::array<glm::dvec3, 3>& triangle, const glm::dvec3& p, const glm::dvec3& eye) {
+    const glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
+    return glm::dot(normal, eye - p) < 0.0 ? -normal : normal;
+}
+
+// cos of the angle between the light and a normal at p.
+double facing_light(const Light& light, const glm::dvec3& normal, const glm::dvec3& p) {
     const glm::dvec3 to_light = light.is_directional() ? -light.direction : light.position - p;
     return glm::dot(normal, glm::normalize(to_light));
 }
@@ -103,7 +106,7 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     ReferenceImage image{width, height, std::vector<glm::dvec3>(pixels), std::vector<int>(pixels, -1),
                          std::vector<uint8_t>(pixels, 0), std::vector<uint8_t>(pixels, 0),
-                         std::vector<float>(pixels, 0.0f)};
+                         std::vector<float>(pixels, 0.0f), std::vector<glm::dvec3>(pixels)};
     if (shadow_rays == ShadowRays::area) {
         image.visibility.assign(pixels, 0.0f);
         image.light_samples = int(stratified_disc(samples, 0).size());
@@ -123,7 +126,8 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
             image.visible[i] = 1;
             if (shadow_rays == ShadowRays::skipped) continue;
             image.lit[i] = sees_light(tracer, local_light, local_triangle, local_p);
-            image.facing[i] = float(facing_light(scene.light, triangle, p, camera.position));
+            image.normal[i] = seen_normal(triangle, p, camera.position);
+            image.facing[i] = float(facing_light(scene.light, image.normal[i], p));
             if (shadow_rays == ShadowRays::area)
                 image.visibility[i] =
                     float(visible_share(tracer, local_light, local_triangle, local_p, samples, std::uint32_t(i)));
@@ -143,6 +147,12 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
 
 ReferenceImage soft_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height, int samples) {
     return trace_camera(scene, triangles, width, height, ShadowRays::area, samples);
+}
+
+ReferenceImage light_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height,
+                               int light_samples) {
+    return scene.light.is_area() ? soft_reference(scene, triangles, width, height, light_samples)
+                                 : exact_reference(scene, triangles, width, height);
 }
 
 ReferenceImage visible_points(const Scene& scene, const WorldTriangles& triangles, int width, int height) {

@@ -18,6 +18,7 @@ struct ReferenceImage {
     std::vector<uint8_t> visible;      // the primary ray meets a triangle between near and far
     std::vector<uint8_t> lit;          // visible, and no caster triangle lies between it and the light
     std::vector<float> facing;         // cos of the angle between the seen side's normal and the light: <= 0 in its own shade
+    std::vector<glm::dvec3> normal;    // the seen side's unit normal; (0, 0, 0) where nothing is visible or not traced
     // soft_reference only: the share of an area light each visible point sees, from light_samples rays.
     std::vector<float> visibility;
     int light_samples = 0;
@@ -38,6 +39,11 @@ ReferenceImage exact_reference(const Scene& scene, const WorldTriangles& triangl
 // pixel the share of the light its point sees, from `samples` stratified shadow rays over the sun's
 // disc of directions or the sphere light's disc facing the point (reference/light_samples.hpp;
 // their standard error: visibility_standard_error). A point light's share is 0 or 1.
+constexpr int kDefaultLightSamples = 64;  // shadow rays per pixel unless a caller asks for more
+// The reference a scene's light calls for: soft_reference with `light_samples` rays per pixel when
+// the light has a size (Light::is_area), else exact_reference.
+ReferenceImage light_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height,
+                               int light_samples = kDefaultLightSamples);
 ReferenceImage soft_reference(const Scene& scene, const WorldTriangles& triangles, int width, int height, int samples);
 
 // The primary rays alone: the camera's depth image (position, object, visible), its lit and facing

@@ -3,18 +3,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "math/hash.hpp"
+
 namespace shadowlab {
 namespace {
-
-// A 32-bit integer hash (Wellons' lowbias32): jitter that looks random and repeats exactly.
-std::uint32_t hashed(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
 
 double unit_interval(std::uint32_t bits) { return (bits >> 8) * (1.0 / 16777216.0); }
 
@@ -43,8 +35,8 @@ std::vector<glm::dvec2> stratified_disc(int samples, std::uint32_t seed) {
     disc.reserve(size_t(side) * side);
     for (int j = 0; j < side; ++j)
         for (int i = 0; i < side; ++i) {
-            const std::uint32_t h = hashed(seed * 0x9e3779b9U + std::uint32_t(j * side + i));
-            const glm::dvec2 jitter{unit_interval(h), unit_interval(hashed(h))};
+            const std::uint32_t h = lowbias32(seed * 0x9e3779b9U + std::uint32_t(j * side + i));
+            const glm::dvec2 jitter{unit_interval(h), unit_interval(lowbias32(h))};
             disc.push_back(concentric_disc(2.0 * (glm::dvec2(i, j) + jitter) / double(side) - 1.0));
         }
     return disc;

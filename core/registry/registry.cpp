@@ -1,7 +1,9 @@
 // The list of methods: one line each. Adding a method: its files, one line here (see
 // docs/ARCHITECTURE.md, "Adding a method").
+#include <algorithm>
 #include <stdexcept>
 
+#include "lookup/lookup_settings.hpp"
 #include "methods/cascades.hpp"
 #include "methods/cube.hpp"
 #include "methods/dpsm.hpp"
@@ -22,8 +24,23 @@ constexpr LightSupport kAllLights{};
 constexpr LightSupport kDirectionalOnly{true, false, false};
 constexpr LightSupport kPositionedOnly{false, true, true};
 
+// Every map is read through a filter and a bias: their settings follow a map method's own, except
+// those it declares itself (with a default of its own).
+void add_lookup_settings(Method& method) {
+    if (!method.makes_maps()) return;
+    for (const SettingSpec& spec : lookup_settings())
+        if (std::none_of(method.settings.begin(), method.settings.end(),
+                         [&](const SettingSpec& own) { return own.name == spec.name; }))
+            method.settings.push_back(spec);
+}
+
+std::deque<Method> with_lookup_settings(std::deque<Method> methods) {
+    for (Method& m : methods) add_lookup_settings(m);
+    return methods;
+}
+
 std::deque<Method>& registry() {
-    static std::deque<Method> methods{
+    static std::deque<Method> methods = with_lookup_settings({
         {.name = "uniform",
          .title = "Uniform shadow map",
          .description = "orthographic map fit to the whole scene's bounds",
@@ -38,7 +55,7 @@ std::deque<Method>& registry() {
         {.name = "psm",
          .title = "Perspective shadow map",
          .description = "Stamminger and Drettakis: the map built in the camera's post-perspective space",
-         .settings = {body_kernel_setting()},
+         .settings = psm_settings(),
          .lights = kAllLights,
          .covers = Coverage::shadowable_points,
          .compute_maps = compute_psm},
@@ -94,7 +111,7 @@ std::deque<Method>& registry() {
          .description = "Blinn: the casters flattened onto each receiving plane by the matrix (P . L) I - L P^T",
          .lights = kAllLights,
          .compute_geometry = compute_planar},
-    };
+    });
     return methods;
 }
 
@@ -141,6 +158,7 @@ void register_method(Method method) {
     if (find_method(method.name)) throw std::invalid_argument("method '" + method.name + "' is registered already");
     if ((method.compute_maps == nullptr) == (method.compute_geometry == nullptr))
         throw std::invalid_argument("method '" + method.name + "': set exactly one of compute_maps, compute_geometry");
+    add_lookup_settings(method);
     registry().push_back(std::move(method));
 }
 

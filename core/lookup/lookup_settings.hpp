@@ -1,0 +1,36 @@
+#pragma once
+// The settings every map method shares, beside its own: the filter and the depth bias its lookups
+// apply. The registry appends them to each map method's list, so that the CLI (--set filter=pcss),
+// the window's controls and the tests read one declaration.
+#include <string>
+#include <vector>
+
+#include "lookup/depth_bias.hpp"
+#include "lookup/shadow_filter.hpp"
+#include "methods/settings.hpp"
+
+namespace shadowlab {
+
+// How a point reads a setup's maps.
+struct ShadowLookup {
+    ShadowFilter filter;
+    DepthBias bias;
+};
+
+std::vector<SettingSpec> lookup_settings();
+
+// Whether `name` is one of lookup_settings(), and of those, the filters that read a filter setting
+// ("kernel_size": pcf, pcss, vsm, evsm); empty for a depth-bias setting, which every filter reads.
+bool is_lookup_setting(const std::string& name);
+const std::vector<std::string>& filters_reading(const std::string& setting);
+
+// One of them with another default: a method whose maps read best with it declares it among its own
+// settings, and the registry then leaves the shared one out.
+SettingSpec lookup_setting_defaulting_to(const std::string& name, const std::string& default_value);
+
+// The lookup the settings ask for. `constant_bias` >= 0 (the CLI's --bias B) replaces the bias
+// settings with that constant alone. Throws std::invalid_argument naming the setting for a
+// combination the ranges cannot refuse alone (a prefiltered VSM kernel in world units).
+ShadowLookup lookup_from(const Settings& settings, double constant_bias = -1.0);
+
+}  // namespace shadowlab
