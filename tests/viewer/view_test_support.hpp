@@ -99,20 +99,18 @@ inline Inspection inspect(const Scene& scene, const std::string& method, int res
     return inspect_scene(scene, request);
 }
 
-// The GPU pass's lit mask of a map method against the CPU lookup (in_shadow with the metrics' bias)
-// on a width x height image of the inspection's camera.
+// The GPU pass's lit mask of a map method against the CPU lookup (ShadowReader, the inspection's
+// filter and bias, shadowed below one half) on a width x height image of the inspection's camera.
 inline Agreement gpu_against_cpu_lookup(const Inspection& in, int width, int height) {
     ViewOptions options;
     options.lit_mask = true;
     const RgbImage gpu = render_view(in, ViewKind::camera, options, width, height);
     const ReferenceImage& ref = in.reference(width, height);
+    const ShadowReader reader(in.setup, in.depth, in.scene.light, in.lookup);
     std::vector<int8_t> cpu(ref.visible.size(), -1);
     for (size_t i = 0; i < cpu.size(); ++i)
         if (ref.visible[i])
-            cpu[i] = in_shadow(in.depth, in.setup, ref.position[i],
-                               bias_at(in.setup, in.resolution, in.scene.light, ref.position[i], ref.facing[i], in.bias))
-                         ? 0
-                         : 1;
+            cpu[i] = reader.visibility({.position = ref.position[i], .normal = ref.normal[i]}) < 0.5 ? 0 : 1;
     return agreement(gpu, cpu, ref);
 }
 

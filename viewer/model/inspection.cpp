@@ -21,7 +21,7 @@ Inspection::Judged& Inspection::judged(int width, int height) const {
     std::deque<Judged>& kept = *judged_;
     const auto found = std::find_if(kept.begin(), kept.end(), [&](const Judged& j) { return j.width == width && j.height == height; });
     if (found != kept.end()) return *found;
-    kept.push_front({width, height, exact_reference(scene, triangles, width, height), {}});
+    kept.push_front({width, height, light_reference(scene, triangles, width, height), {}});
     if (kept.size() > kSizesKept) kept.pop_back();
     return kept.front();
 }
@@ -30,9 +30,13 @@ const ReferenceImage& Inspection::reference(int width, int height) const { retur
 
 const ShadowError& Inspection::error(int width, int height) const {
     Judged& j = judged(width, height);
-    if (!j.error)
-        j.error = has_map() ? measure_shadow_error(scene, j.reference, depth, setup, bias)
-                            : judge_shadows(scene, j.reference, geometry->shadowed);
+    if (j.error) return *j.error;
+    if (has_map()) {
+        const ShadowReader reader(setup, depth, scene.light, lookup);
+        j.error = measure_shadow_error(scene, j.reference, reader, receiver_visibility(scene, j.reference, reader));
+    } else {
+        j.error = judge_shadows(scene, j.reference, geometry->shadowed);
+    }
     return *j.error;
 }
 
@@ -58,6 +62,7 @@ Inspection inspect_scene(const Scene& scene, const InspectionRequest& request) {
             in.inputs.visible_depths = trace_receiver_depth_range(scene, in.triangles, in.image_width, in.image_height);
         in.setup = method.compute_maps(in.inputs, in.settings, &in.trace);
         in.depth = rasterize_depth(in.triangles, in.casters, in.setup, in.resolution);
+        in.lookup = lookup_from(in.settings, in.bias);
     } else {
         in.geometry = method.compute_geometry(scene, in.triangles, in.reference(in.image_width, in.image_height),
                                               in.settings, &in.trace);

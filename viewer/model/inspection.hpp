@@ -41,6 +41,7 @@ struct Inspection {
     std::vector<bool> casters;  // per object
     ShadowSetup setup;          // maps: the method's result
     DepthMap depth;             // maps: every map of `setup` rasterized into its tile
+    ShadowLookup lookup;        // maps: the filter and bias the settings ask for (a constant `bias` replaces the bias)
     std::optional<GeometryResult> geometry;  // geometric techniques: the method's result
 
     bool has_map() const { return method->makes_maps(); }
@@ -49,11 +50,12 @@ struct Inspection {
     // What the user is told: a map method's fallbacks, or a technique's limits.
     const std::vector<Note>& notes() const { return has_map() ? setup.fallbacks : geometry->limits; }
 
-    // The exact reference of a width x height camera image, traced on the first call for that size;
+    // The exact reference of a width x height camera image (soft for an area light: light_reference),
+    // traced on the first call for that size;
     // the last few sizes asked for stay (the Error view's, the light views' small one for missed points).
     const ReferenceImage& reference(int width, int height) const;
-    // The result judged against reference(width, height): a map's verdicts (slope-scaled bias per
-    // pixel unless a constant bias was asked for), m and depth steps; a technique's verdicts.
+    // The result judged against reference(width, height): a map's verdicts and visibility read
+    // through `lookup`, m and depth steps; a technique's verdicts.
     const ShadowError& error(int width, int height) const;
 
 private:

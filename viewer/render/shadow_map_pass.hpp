@@ -8,20 +8,25 @@
 // between texels, and scissored to the tile's texels; depth clamped, as the CPU rasterizer clamps
 // casters before the near plane; a paraboloid clipped to its hemisphere, and its casters split first
 // where the map asks, as the CPU rasterizer splits them: SetCasterTriangles). Stage 2 renders the scene
-// through `shade` (normally a vtkRenderStepsPass) and looks each fragment up as maps/map_lookup.cpp
-// does: the setup's rule picks the map, the method's z bias is applied before the division by w
-// (XPSM step 18), constant or slope-scaled per fragment exactly as the CPU metrics compute it, and
-// the nearest texel of the map's tile is compared. Inside a blend band (blend_of) the two maps'
-// verdicts are crossfaded as shadow_amount crossfades them: the shading mixes by the weight, the lit
-// mask thresholds the amount at one half. An overlay (render/map_overlay.hpp) may tint the result.
+// through `shade` (normally a vtkRenderStepsPass) and reads each fragment's visibility as the one CPU
+// lookup does (lookup/shadow_reader.cpp), step by step: the setup's rule picks the map; the normal
+// offset moves the point; the depth bias (world lengths) moves it toward the light for its depth
+// alone, read exactly after the division by w whatever the map's perspective; then the filter: hard,
+// pcf, pcss (blocker search, penumbra, PCF) over the CPU's own tap lists, or vsm/evsm on the
+// box-blurred moments, which the fragment shader sums from the depth texture itself. Inside a blend
+// band (blend_of) the two maps' visibilities are crossfaded. The shading mixes by 1 − visibility (soft
+// shadows shade by themselves), the lit mask thresholds the visibility at one half, as the CPU's
+// verdicts do. An overlay (render/map_overlay.hpp) may tint the result.
 #include <vector>
 #include <glm/glm.hpp>
 #include <vtkOpenGLRenderPass.h>
 #include <vtkSmartPointer.h>
 
+#include "lookup/lookup_settings.hpp"
 #include "maps/shadow_map.hpp"
 #include "render/map_overlay.hpp"
 #include "render/surface_shading.hpp"
+#include "scene/light.hpp"
 #include "scene/tessellation.hpp"
 
 class vtkActor;
@@ -40,17 +45,19 @@ public:
     vtkTypeMacro(ShadowMapPass, vtkOpenGLRenderPass);
 
     static constexpr int kMaxMaps = 8;  // the shaders' uniform arrays hold this many maps
+    static constexpr int kMaxTaps = 81;  // and this many filter taps: kernel_size <= 9
 
-    // What stage 2 writes: the surface shading (render/surface_shading.hpp), shadow tinted, or white
-    // where lit and black where shadowed.
-    enum class Output { shaded, lit_mask };
+    // What stage 2 writes: the surface shading (render/surface_shading.hpp), shadow tinted; white
+    // where lit and black where shadowed; or the visibility itself as a grey level, unlit (for tests).
+    enum class Output { shaded, lit_mask, visibility };
 
     // The maps, their tiles and the rule that picks one per point; resolution: texels per side of
     // the whole texture. Throws std::invalid_argument for more than kMaxMaps maps.
     void SetSetup(const ShadowSetup& setup, int resolution);
-    // bias: world units along the light, or < 0 for the slope-scaled bias per fragment (as the CPU
-    // metrics use). light: (direction it travels, 0) or (position, 1); eye: the camera's position.
-    void SetBias(double bias, const glm::dvec4& light, const glm::dvec3& eye);
+    // How fragments read the maps (the filter and the bias, as ShadowReader reads them); the light and
+    // the eye's position in the setup's coordinates (PCSS sizes its search and penumbra by the light).
+    // Throws std::invalid_argument for a filter of more than kMaxTaps taps.
+    void SetLookup(const ShadowLookup& lookup, const Light& light, const glm::dvec3& eye);
     void SetCasters(const std::vector<vtkProp*>& casters);  // the props drawn into the maps
     // The same casters as triangles, in the setup's coordinates, with their objects' flags: a map that
     // splits its casters (a paraboloid with max_sagitta_texels > 0, raster/paraboloid_edges.hpp) draws
@@ -95,8 +102,12 @@ private:
     std::vector<glm::vec3> ramp_{glm::vec3(0.0f), glm::vec3(1.0f)};
     ShadowSetup setup_;   // no maps until SetSetup: everything lit
     int drawn_map_ = 0;   // stage 1: the map whose tile is being drawn
-    float bias_ = -1.0f;
+    ShadowLookup lookup_;
+    Light light_;
+    std::vector<glm::vec3> taps_;  // the filter's taps as (offset, weight); empty for vsm, evsm
     ShadingFrame frame_;
+    glm::ivec2 image_origin_{0};  // stage 2: the renderer's lower-left corner in the window
+    int image_height_ = 0;        // and its height in pixels
     int resolution_ = 1024;
     std::vector<vtkProp*> casters_;
     WorldTriangles caster_triangles_;

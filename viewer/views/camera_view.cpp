@@ -39,7 +39,7 @@ void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOpt
                       const Light& light) {
     vtkNew<ShadowMapPass> pass;
     pass->SetSetup(relative_to(in.setup, in.scene.camera.position), in.resolution);
-    pass->SetBias(in.bias, pass_light(light), glm::dvec3(0.0));  // the eye
+    pass->SetLookup(in.lookup, light, glm::dvec3(0.0));  // the eye
     pass->SetCasters({casters});
     // Maps that split their casters (a paraboloid's max_sagitta_texels) draw these, split as the CPU does.
     pass->SetCasterTriangles(relative_to(in.triangles, in.scene.camera.position), in.casters);

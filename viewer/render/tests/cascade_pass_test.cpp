@@ -1,5 +1,5 @@
 // Two maps chosen by view depth on the GPU: the blend band crossfaded as the CPU crossfades it
-// (shadow_amount), and the Camera view's overlay painting each surface by the map serving it.
+// (ShadowReader::visibility), and the Camera view's overlay painting each surface by the map serving it.
 #include <array>
 #include <iostream>
 #include <gtest/gtest.h>
@@ -54,15 +54,6 @@ ShadowSetup near_then_far_hard(const ShadowInputs& inputs, const Settings& setti
     return setup;
 }
 
-// Each map's own slope-scaled bias at a pixel, as the GPU pass computes it per map.
-MapBias slope_scaled_per_map(const Inspection& in, const ReferenceImage& ref, size_t i) {
-    return [&in, &ref, i](int map) {
-        const ShadowMap& m = in.setup.maps[map];
-        return slope_scaled_bias(m, tile_resolution(m, in.resolution), in.scene.light.direction, ref.position[i],
-                                 ref.facing[i]);
-    };
-}
-
 class TwoMapsByViewDepth : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
@@ -81,7 +72,7 @@ bool nearer(const unsigned char* c, const glm::vec3& mine, const glm::vec3& othe
 
 }  // namespace
 
-// The GPU's verdicts against shadow_amount's threshold on every visible pixel away from edges, and
+// The GPU's verdicts against the CPU visibility's threshold on every visible pixel away from edges, and
 // on those alone where the band decides (the crossfade's verdict is not the own map's): there a GPU
 // ignoring the band would be wrong on every pixel.
 TEST_F(TwoMapsByViewDepth, GpuBlendsAsTheCpuDoes) {
@@ -91,12 +82,14 @@ TEST_F(TwoMapsByViewDepth, GpuBlendsAsTheCpuDoes) {
         ShadowSetup own_map_only = in.setup;
         own_map_only.selection.blend_band = 0.0;
         const ReferenceImage& ref = in.reference(kWidth, kHeight);
+        const ShadowReader blended(in.setup, in.depth, in.scene.light, in.lookup);
+        const ShadowReader own_map(own_map_only, in.depth, in.scene.light, in.lookup);
         std::vector<int8_t> cpu(ref.visible.size(), -1), decided_by_band(ref.visible.size(), -1);
         for (size_t i = 0; i < cpu.size(); ++i) {
             if (!ref.visible[i]) continue;
-            const MapBias bias = slope_scaled_per_map(in, ref, i);
-            cpu[i] = in_shadow(in.depth, in.setup, ref.position[i], bias) ? 0 : 1;
-            if ((cpu[i] == 0) != in_shadow(in.depth, own_map_only, ref.position[i], bias)) decided_by_band[i] = cpu[i];
+            const Receiver receiver{.position = ref.position[i], .normal = ref.normal[i]};
+            cpu[i] = blended.visibility(receiver) < 0.5 ? 0 : 1;
+            if ((cpu[i] == 0) != (own_map.visibility(receiver) < 0.5)) decided_by_band[i] = cpu[i];
         }
         ViewOptions options;
         options.lit_mask = true;
