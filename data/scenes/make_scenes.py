@@ -119,12 +119,37 @@ def scene(name, description, cam, light, objects, ground_size):
             "objects": [ground(ground_size)] + objects}
 
 
+DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION = 55, 17
+
+
 def default(rng):
     return scene(
         "default", "A small town at sunset, seen from the street: low sun from the front right.",
         camera((0, 2.5, 190), from_angles(3, -1.5)),
-        {"type": "directional", "direction": travelling(55, 17)},
+        {"type": "directional", "direction": travelling(DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION)},
         town(rng, 400, 200, near_street(0, 10), lot=18), 400)
+
+
+def default_town_under(name, description, light):
+    """The default scene, its town drawn from default's own seed, under another light."""
+    return {**default(random.Random(seed_of(default))), "name": name, "description": description, "light": light}
+
+
+def grazing_sun(rng):
+    return default_town_under(
+        "grazing_sun",
+        "The default town under a grazing sun, 0.5 deg above the horizon at the default azimuth: "
+        "the depth bias's hardest case (acne on the ground against peter panning of long shadows).",
+        {"type": "directional", "direction": travelling(DEFAULT_SUN_AZIMUTH, 0.5)})
+
+
+def sun_disc(rng):
+    return default_town_under(
+        "sun_disc",
+        "The default town under a sun of its real size, a disc 0.5 deg in radius: soft shadows, "
+        "penumbrae growing with the distance from the caster.",
+        {"type": "directional", "direction": travelling(DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION),
+         "angular_radius_deg": 0.5})
 
 
 def small_town(rng, count=60, street=0):
@@ -282,8 +307,27 @@ def lamp_room(rng):
         objects, 10)
 
 
+def soft_shadows(rng):
+    return {"name": "soft_shadows",
+            "description": "A post and a raised slab under a sun 2 degrees wide: each shadow sharp where it "
+                           "meets its caster and soft away from it (contact hardening: what PCSS reproduces "
+                           "and a fixed PCF kernel does not).",
+            "camera": camera((-0.5, 3, 3.5), (-0.1, -0.6, -1), near=0.1, far=50),
+            "light": {"type": "directional", "direction": travelling(60, 40), "angular_radius_deg": 2},
+            "objects": [ground(20),
+                        {"type": "box", "name": "post", "position": [-2.5, 1.5, -1], "size": [0.3, 3, 0.3]},
+                        {"type": "box", "name": "slab", "position": [1.5, 1.6, -1], "size": [2, 0.15, 2]},
+                        {"type": "box", "name": "leg", "position": [1.5, 0.8, -1], "size": [0.2, 1.6, 0.2]}]}
+
+
 SCENES = [default, light_parallel_behind, light_parallel_front, casters_behind, light_overhead,
-          far_near_1e5, box_on_plane, spot, point, volumes, volumes_eye_in_shadow, lamp_room]
+          far_near_1e5, box_on_plane, spot, point, volumes, volumes_eye_in_shadow, lamp_room,
+          grazing_sun, sun_disc, soft_shadows]
+
+
+def seed_of(make):
+    """Each scene's random seed: its place in SCENES, from 1."""
+    return SCENES.index(make) + 1
 
 
 def write(data, path):
@@ -299,8 +343,8 @@ def write(data, path):
 
 
 def main():
-    for seed, make in enumerate(SCENES, start=1):
-        write(make(random.Random(seed)), os.path.join(HERE, make.__name__ + ".json"))
+    for make in SCENES:
+        write(make(random.Random(seed_of(make))), os.path.join(HERE, make.__name__ + ".json"))
 
 
 if __name__ == "__main__":

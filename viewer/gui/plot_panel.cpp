@@ -6,7 +6,9 @@
 #include <QPixmap>
 #include <QVBoxLayout>
 
+#include "metrics/bias_sweep.hpp"
 #include "metrics/measurement.hpp"
+#include "plot/bias_chart.hpp"
 #include "plot/shimmer_chart.hpp"
 
 namespace shadowlab {
@@ -31,6 +33,18 @@ ChartSpec error_against_resolution(const MeasureContext& context, const Method& 
     return chart;
 }
 
+// The window's other settings held, bias_slope swept.
+ChartSpec acne_against_bias(const MeasureContext& context, const Method& method,
+                            std::map<std::string, std::string> settings, int resolution) {
+    settings.erase("bias_slope");
+    const BiasCurve curve = sweep_bias(context, method, settings, resolution, "bias_slope",
+                                       default_bias_values(context, "bias_slope", resolution));
+    ChartSpec chart = bias_chart({curve}, method.name + " at " + std::to_string(resolution) +
+                                              "²: acne (false shadow) solid, false light dashed");
+    chart.y_title = "% of receiver pixels";
+    return chart;
+}
+
 }  // namespace
 
 PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent), kind_(new QComboBox(this)), image_(new QLabel(this)) {
@@ -38,6 +52,7 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent), kind_(new QComboBox(thi
     kind_->addItem("Error against map resolution", static_cast<int>(Kind::error_against_resolution));
     kind_->addItem(QString("Shimmer: the camera moving sideways, %1 frames").arg(kShimmerFrames),
                    static_cast<int>(Kind::shimmer));
+    kind_->addItem("Acne / peter panning against bias_slope", static_cast<int>(Kind::acne_against_bias));
     image_->setAlignment(Qt::AlignCenter);
     image_->setMinimumSize(320, 200);
     image_->setScaledContents(false);
@@ -53,9 +68,17 @@ PlotPanel::Kind PlotPanel::kind() const { return static_cast<Kind>(kind_->curren
 void PlotPanel::set_kind(Kind kind) { kind_->setCurrentIndex(kind_->findData(static_cast<int>(kind))); }
 
 QString PlotPanel::work(const std::string& method) const {
-    return kind() == Kind::shimmer
-               ? QString("plot: %1 along %2 frames of a sideways camera path").arg(QString::fromStdString(method)).arg(kShimmerFrames)
-               : QString("plot: measuring %1 at 256² to 2048² against the exact reference").arg(QString::fromStdString(method));
+    const QString name = QString::fromStdString(method);
+    switch (kind()) {
+        case Kind::shimmer:
+            return QString("plot: %1 along %2 frames of a sideways camera path").arg(name).arg(kShimmerFrames);
+        case Kind::acne_against_bias:
+            return QString("plot: measuring %1 at 0 and 1/16 to 32 times the slope-scaled bias against the exact "
+                           "reference").arg(name);
+        case Kind::error_against_resolution:
+            break;
+    }
+    return QString("plot: measuring %1 at 256² to 2048² against the exact reference").arg(name);
 }
 
 bool PlotPanel::update_plot(const Scene& scene, const std::string& method_name,
@@ -69,6 +92,8 @@ bool PlotPanel::update_plot(const Scene& scene, const std::string& method_name,
         const CameraPath path{CameraPath::Kind::translate, kShimmerFrames, 0.0};
         shimmer_ = measure_shimmer(context, shimmer_samples(context), *method, settings, resolution, -1.0, path);
         chart = shimmer_chart(*shimmer_, method_name + " at " + std::to_string(resolution) + "²: " + shimmer_summary(*shimmer_));
+    } else if (kind() == Kind::acne_against_bias) {
+        chart = acne_against_bias(context, *method, overrides, resolution);
     } else {
         chart = error_against_resolution(context, *method, settings);
     }

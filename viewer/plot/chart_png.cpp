@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include <vtkAxis.h>
+#include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkContext2D.h>
 #include <vtkContextScene.h>
@@ -14,6 +15,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPen.h>
 #include <vtkPlotPoints.h>
 #include <vtkPoints2D.h>
 #include <vtkRenderWindow.h>
@@ -120,6 +122,8 @@ void add_series(vtkChartXY& chart, const ChartSpec& spec, size_t index, Bounds& 
                                    vtkPlotPoints::CIRCLE, line ? 6.0f : 8.0f);
     plot->SetLabel(dropped == 0 ? s.name
                                 : s.name + " (" + std::to_string(dropped) + " non-positive dropped)");
+    plot->SetLegendVisibility(s.in_legend);
+    if (s.dashed) plot->GetPen()->SetLineType(vtkPen::DASH_LINE);
     if (!marked.empty())
         add_plot(chart, vtkChart::POINTS, make_table(marked), rgb, vtkPlotPoints::CROSS, 16.0f)
             ->SetLegendVisibility(false);
@@ -149,12 +153,16 @@ void pad_axis(vtkAxis* axis, double lo, double hi, bool log) {
 
 }  // namespace
 
-std::array<unsigned char, 3> series_color(const ChartSpec& chart, size_t index) {
+std::array<unsigned char, 3> palette_color(size_t index) {
     static constexpr std::array<Rgb, 10> palette{{{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
                                                   {148, 103, 189}, {140, 86, 75}, {227, 119, 194},
                                                   {127, 127, 127}, {188, 189, 34}, {23, 190, 207}}};
+    return palette[index % palette.size()];
+}
+
+std::array<unsigned char, 3> series_color(const ChartSpec& chart, size_t index) {
     const Rgb& own = chart.series.at(index).color;
-    return own == Rgb{0, 0, 0} ? palette[index % palette.size()] : own;
+    return own == Rgb{0, 0, 0} ? palette_color(index) : own;
 }
 
 void write_chart_png(const ChartSpec& spec, const std::string& png_file) {
@@ -163,6 +171,11 @@ void write_chart_png(const ChartSpec& spec, const std::string& png_file) {
     vtkNew<vtkChartXY> chart;
     chart->SetTitle(spec.title);
     chart->SetShowLegend(true);
+    using Corner = ChartSpec::LegendCorner;
+    const bool left = spec.legend == Corner::top_left || spec.legend == Corner::bottom_left;
+    const bool bottom = spec.legend == Corner::bottom_left || spec.legend == Corner::bottom_right;
+    chart->GetLegend()->SetHorizontalAlignment(left ? vtkChartLegend::LEFT : vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetVerticalAlignment(bottom ? vtkChartLegend::BOTTOM : vtkChartLegend::TOP);
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(spec.x_title);
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(spec.y_title);
     chart->GetAxis(vtkAxis::BOTTOM)->SetLogScale(spec.log_x);

@@ -13,6 +13,8 @@ struct ChartSeries {
     bool line = true;                 // points joined by a line (else points only)
     std::vector<bool> marked;         // optional: per point, also drawn with a cross (e.g. fallbacks)
     std::array<unsigned char, 3> color{0, 0, 0};  // RGB; {0, 0, 0} picks from a palette by series index
+    bool dashed = false;     // the line drawn dashed (a second quantity of the same subject, same colour)
+    bool in_legend = true;   // false: no legend entry (a mark that annotates another series)
 };
 
 struct ChartSpec {
@@ -20,7 +22,12 @@ struct ChartSpec {
     bool log_x = false, log_y = false;  // points with a non-positive value on a log axis are dropped
     int width = 900, height = 600;
     std::vector<ChartSeries> series;
+    enum class LegendCorner { top_right, top_left, bottom_left, bottom_right };
+    LegendCorner legend = LegendCorner::top_right;  // where the legend box sits: away from the points
 };
+
+// The palette's colour number `index` (cycling through ten).
+std::array<unsigned char, 3> palette_color(size_t index);
 
 // The colour series `index` is drawn with: its own, or the palette's when it is {0, 0, 0}.
 std::array<unsigned char, 3> series_color(const ChartSpec& chart, size_t index);
