@@ -28,6 +28,20 @@ AliasingShown aliasing_or_throw(const std::string& name) {
     throw std::invalid_argument("--aliasing: unknown '" + name + "' (one of total, perspective, projection)");
 }
 
+ErrorShown error_or_throw(const std::string& name) {
+    if (name == "auto") return ErrorShown::automatic;
+    if (name == "verdicts") return ErrorShown::verdicts;
+    if (name == "signed") return ErrorShown::signed_visibility;
+    throw std::invalid_argument("--error: unknown '" + name + "' (one of auto, verdicts, signed)");
+}
+
+TextureShown texture_or_throw(const std::string& name) {
+    if (name == "depth") return TextureShown::depth;
+    if (name == "mean") return TextureShown::moment_mean;
+    if (name == "deviation") return TextureShown::moment_deviation;
+    throw std::invalid_argument("--texture: unknown '" + name + "' (one of depth, mean, deviation)");
+}
+
 MapOverlay overlay_or_throw(const std::string& name) {
     if (name == "none") return MapOverlay::none;
     if (name == "cascade") return MapOverlay::cascade_index;
@@ -72,6 +86,8 @@ void run_render(const RenderOptions& options) {
     limits::check(limits::image_side, "--size height", options.height);
     const ViewKind view = view_or_throw(options.view);
     const AliasingShown aliasing = aliasing_or_throw(options.aliasing);
+    const ErrorShown error = error_or_throw(options.error);
+    const TextureShown texture = texture_or_throw(options.texture);
     const SpacePreset preset = preset_or_throw(options.preset);
     const MapOverlay overlay = overlay_or_throw(options.overlay);
     Scene scene = load_scene(options.scene_file);
@@ -93,6 +109,8 @@ void run_render(const RenderOptions& options) {
     ViewOptions view_options;
     view_options.step = options.step;
     view_options.aliasing = aliasing;
+    view_options.error = error;
+    view_options.texture = texture;
     view_options.preset = preset;
     view_options.scene_in_ppls = options.scene_in_ppls;
     view_options.overlay = overlay;

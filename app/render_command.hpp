@@ -1,7 +1,7 @@
 #pragma once
 // `shadowlab render SCENE --method M [--view V] [--step ID] [--size WxH] [--resolution N] [--bias B]
-//  [--aliasing total|perspective|projection] [--light AZ,EL] [--preset orbit|light|side]
-//  [--overlay none|cascade|texels] [--no-scene-in-ppls] --out FILE.png`
+//  [--aliasing total|perspective|projection] [--error auto|verdicts|signed] [--texture depth|mean|deviation]
+//  [--light AZ,EL] [--preset orbit|light|side] [--overlay none|cascade|texels] [--no-scene-in-ppls] --out FILE.png`
 #include <map>
 #include <string>
 
@@ -17,6 +17,8 @@ struct RenderOptions {
     int resolution = 2048;
     double bias = -1.0;  // world units along the light; < 0: automatic
     std::string aliasing = "total";  // the Error view's heat map: m, or its perspective or projection factor
+    std::string error = "auto";      // the Error view: verdicts, signed visibility error, or auto (signed if soft)
+    std::string texture = "depth";   // the Shadow map view: depth, or the moments' mean or deviation (vsm, evsm)
     std::string light;  // "AZ,EL" in degrees, as the window's Controls panel: the light's new direction; empty: the scene's
     std::string preset = "orbit";  // World, Light space, PPLS: how the camera looks (space_preset_named)
     bool scene_in_ppls = true;     // PPLS: draw the scene's triangles

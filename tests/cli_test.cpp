@@ -257,6 +257,41 @@ TEST(Cli, SweepMarksXpsmsMinersLampAsTheLightTurnsParallel) {
     EXPECT_TRUE(is_png(out + "/sweep_far_near.png"));
 }
 
+TEST(Cli, SweepBiasWritesEachMethodsCurveItsBestAndAPlot) {
+    const std::string out = ::testing::TempDir() + "shadowlab_sweep_bias";
+    std::filesystem::remove_all(out);
+    const CliResult r = run_cli("sweep " + source_path("data/scenes/box_on_plane.json") +
+                                " --bias --bias-setting bias_normal --methods focused,volumes,lispsm --resolution 256"
+                                " --size 96x54 --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("volumes skipped"), std::string::npos) << "a technique has no bias: " << r.err;
+    const std::vector<std::string> csv = lines_of(out + "/sweep_bias.csv");
+    ASSERT_GT(csv.size(), 1u);
+    EXPECT_EQ(csv[0], "method,setting,value,false_shadow,false_light,misclassified,best,fallback");
+    std::map<std::string, int> rows, best;
+    for (size_t i = 1; i < csv.size(); ++i) {
+        const std::string method = csv[i].substr(0, csv[i].find(','));
+        EXPECT_EQ(csv[i].find(method + ",bias_normal,"), 0u) << csv[i];
+        ++rows[method];
+        best[method] += csv[i].find(",1,\"") != std::string::npos;
+    }
+    EXPECT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows["focused"], rows["lispsm"]) << "one ladder for every method";
+    EXPECT_EQ(best["focused"], 1) << "one best point per method";
+    EXPECT_EQ(best["lispsm"], 1);
+    EXPECT_NE(r.out.find("focused: best bias_normal"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("lispsm: best bias_normal"), std::string::npos) << r.out;
+    EXPECT_TRUE(is_png(out + "/sweep_bias.png"));
+    EXPECT_FALSE(std::filesystem::exists(out + "/sweep.csv")) << "--bias replaces the light and far/near sweeps";
+}
+
+TEST(Cli, SweepBiasSettingNeedsBias) {
+    const CliResult r = run_cli("sweep " + source_path("data/scenes/box_on_plane.json") +
+                                " --bias-setting bias_normal --out " + ::testing::TempDir() + "shadowlab_unused");
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("--bias"), std::string::npos) << r.err;
+}
+
 TEST(Cli, InspectVolumesListsSilhouetteEdgesAndQuadsAtInfinity) {
     const CliResult r = run_cli("inspect " + source_path("data/scenes/volumes.json") + " --method volumes --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -25,6 +25,7 @@
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
+#include "qt_test_main.hpp"
 #include "gui/camera_pose.hpp"
 #include "gui/controls_panel.hpp"
 #include "gui/main_window.hpp"
@@ -473,14 +474,6 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) {
-    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-    QApplication app(argc, argv);
-    QTemporaryDir settings;
-    QApplication::setOrganizationName("ShadowLabTests");
-    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settings.path());
-    MainWindowTest test;
-    return QTest::qExec(&test, argc, argv);
-}
+int main(int argc, char** argv) { return shadowlab::testing::run_qt_suite<MainWindowTest>(argc, argv, "ShadowLabTests"); }
 
 #include "main_window_test.moc"

@@ -1,6 +1,9 @@
 #include "gui/controls_panel.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -13,6 +16,7 @@
 #include <QSlider>
 #include <QVBoxLayout>
 
+#include "lookup/lookup_settings.hpp"
 #include "scene/light.hpp"
 
 namespace shadowlab {
@@ -42,12 +46,34 @@ QWidget* setting_editor(const SettingSpec& spec, QWidget* parent) {
     return spin;
 }
 
+// Where the form lists a setting: among the method's own, or in the lookup's Filter or Bias group.
+enum class SettingGroup { own, filter, bias };
+
+SettingGroup group_of(const std::string& name) {
+    if (!is_lookup_setting(name)) return SettingGroup::own;
+    return filters_reading(name).empty() ? SettingGroup::bias : SettingGroup::filter;
+}
+
+QLabel* group_header(SettingGroup group, QWidget* parent) {
+    auto* header = new QLabel(group == SettingGroup::filter ? "Filter" : "Depth bias", parent);
+    header->setObjectName(group == SettingGroup::filter ? "filterSettings" : "biasSettings");
+    QFont bold = header->font();
+    bold.setBold(true);
+    header->setFont(bold);
+    return header;
+}
+
+QString setting_text(const QWidget* editor) {
+    if (auto* box = qobject_cast<const QComboBox*>(editor)) return box->currentText();
+    if (auto* line = qobject_cast<const QLineEdit*>(editor)) return line->text();
+    return QString::number(static_cast<const QDoubleSpinBox*>(editor)->value(), 'g', 12);
+}
+
 }  // namespace
 
 ControlsPanel::ControlsPanel(QWidget* parent)
     : QWidget(parent),
       method_(new QComboBox(this)),
-      settings_form_(nullptr),
       settings_box_(new QGroupBox("Method settings", this)),
       resolution_(new QComboBox(this)),
       bias_(new QDoubleSpinBox(this)),
@@ -88,7 +114,7 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     bias_->setToolTip("depth bias in world units along the light; 'slope-scaled' = the texel's world size times 1 + tan θ, per pixel");
     azimuth_->setToolTip("light azimuth (degrees about +y)");
     elevation_->setToolTip("light elevation (degrees above the horizon)");
-    settings_form_ = new QFormLayout(settings_box_);
+    new QVBoxLayout(settings_box_);
 
     auto* general = new QFormLayout;
     general->addRow("Method", method_);
@@ -125,24 +151,86 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     });
 }
 
+// The method's own settings, then its lookup's under two headers in the same form (its labels in
+// one column): the filter with the settings it reads (the others taken out, kept for when their
+// filter is chosen again) and the depth bias. The registry appends the lookup's settings, filter
+// first, so each group's rows follow one another.
 void ControlsPanel::rebuild_settings() {
-    while (settings_form_->rowCount() > 0) settings_form_->removeRow(0);
+    delete settings_content_;
+    setting_editors_.clear();
+    filter_rows_.clear();
+    filter_ = nullptr;
+    filter_header_ = nullptr;
     const Method& method = method_or_throw(method_->currentData().toString().toStdString());
     resolution_->setEnabled(method.makes_maps());  // a geometric technique has no map
     bias_->setEnabled(method.makes_maps());
+    settings_content_ = new QWidget(settings_box_);
+    settings_box_->layout()->addWidget(settings_content_);
+    settings_form_ = new QFormLayout(settings_content_);
+    settings_form_->setContentsMargins(0, 0, 0, 0);
+    SettingGroup group = SettingGroup::own;
     for (const SettingSpec& spec : method.settings) {
-        QWidget* editor = setting_editor(spec, settings_box_);
-        editor->setObjectName(QString::fromStdString(spec.name));
-        editor->setToolTip(QString::fromStdString(spec.description));
-        if (auto* box = qobject_cast<QComboBox*>(editor))
-            connect(box, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::changed);
-        else if (auto* line = qobject_cast<QLineEdit*>(editor))
-            connect(line, &QLineEdit::editingFinished, this, &ControlsPanel::changed);
-        else
-            connect(static_cast<QDoubleSpinBox*>(editor), &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
-        settings_form_->addRow(QString::fromStdString(spec.name), editor);
+        if (group_of(spec.name) != group) {
+            group = group_of(spec.name);
+            QLabel* header = group_header(group, settings_content_);
+            settings_form_->addRow(header);
+            if (group == SettingGroup::filter) filter_header_ = header;
+        }
+        QWidget* editor = connected_editor(spec, settings_content_);
+        auto* label = new QLabel(QString::fromStdString(spec.name), settings_content_);
+        settings_form_->addRow(label, editor);
+        if (group == SettingGroup::filter) filter_rows_.emplace_back(label, editor);
+        setting_editors_.push_back(editor);
     }
     settings_box_->setVisible(!method.settings.empty());
+    show_filter_settings();
+}
+
+// A setting's editor, named by the setting, emitting changed() when edited; the filter's chooser
+// also shows the settings it reads.
+QWidget* ControlsPanel::connected_editor(const SettingSpec& spec, QWidget* parent) {
+    QWidget* editor = setting_editor(spec, parent);
+    editor->setObjectName(QString::fromStdString(spec.name));
+    editor->setToolTip(QString::fromStdString(spec.description));
+    if (auto* box = qobject_cast<QComboBox*>(editor)) {
+        if (spec.name == "filter") {
+            filter_ = box;
+            connect(box, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+                    &ControlsPanel::show_filter_settings);
+        }
+        connect(box, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::changed);
+    } else if (auto* line = qobject_cast<QLineEdit*>(editor)) {
+        connect(line, &QLineEdit::editingFinished, this, &ControlsPanel::changed);
+    } else {
+        connect(static_cast<QDoubleSpinBox*>(editor), &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
+    }
+    return editor;
+}
+
+bool ControlsPanel::applies(const QWidget* editor) const {
+    const std::vector<std::string>& read_by = filters_reading(editor->objectName().toStdString());
+    if (!filter_ || read_by.empty()) return true;  // a method's own, or the bias's
+    return std::find(read_by.begin(), read_by.end(), filter_->currentText().toStdString()) != read_by.end();
+}
+
+// The rows are taken out and the shown ones put back under the Filter header: a hidden row of a
+// QFormLayout (Qt 5) would still take its spacing.
+void ControlsPanel::show_filter_settings() {
+    if (!filter_header_) return;
+    for (const auto& [label, editor] : filter_rows_) {
+        const QFormLayout::TakeRowResult row = settings_form_->takeRow(editor);  // the widgets stay, the items are ours
+        delete row.labelItem;
+        delete row.fieldItem;
+    }
+    int row = 0;
+    QFormLayout::ItemRole role;
+    settings_form_->getWidgetPosition(filter_header_, &row, &role);
+    for (const auto& [label, editor] : filter_rows_) {
+        const bool shown = applies(editor);
+        label->setVisible(shown);
+        editor->setVisible(shown);
+        if (shown) settings_form_->insertRow(++row, label, editor);
+    }
 }
 
 InspectionRequest ControlsPanel::request() const {
@@ -150,16 +238,8 @@ InspectionRequest ControlsPanel::request() const {
     r.method = method_->currentData().toString().toStdString();
     r.resolution = resolution_->currentData().toInt();
     r.bias = bias_->value() <= bias_->minimum() ? -1.0 : bias_->value();
-    for (int row = 0; row < settings_form_->rowCount(); ++row) {
-        QWidget* editor = settings_form_->itemAt(row, QFormLayout::FieldRole)->widget();
-        const std::string key = editor->objectName().toStdString();
-        if (auto* box = qobject_cast<QComboBox*>(editor))
-            r.settings[key] = box->currentText().toStdString();
-        else if (auto* line = qobject_cast<QLineEdit*>(editor))
-            r.settings[key] = line->text().toStdString();
-        else
-            r.settings[key] = QString::number(static_cast<QDoubleSpinBox*>(editor)->value(), 'g', 12).toStdString();
-    }
+    for (const QWidget* editor : setting_editors_)
+        if (applies(editor)) r.settings[editor->objectName().toStdString()] = setting_text(editor).toStdString();
     return r;
 }
 

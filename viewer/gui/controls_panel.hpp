@@ -1,8 +1,12 @@
 #pragma once
 // The controls: method (the map methods, then the geometric techniques), its settings (each within
-// its declared range), map resolution, depth bias, the camera's aspect (the scene's, locked, or the
-// Camera panel's), the light's direction as azimuth and elevation, for shadow volumes a toggle that
-// moves the camera into a shadow, and a toggle that shows the Camera view's shadows alone.
+// its declared range; a map method's own first, then its lookup's under a Filter header, only those
+// the chosen filter reads, and a Depth bias header), map resolution, depth bias, the camera's aspect
+// (the scene's, locked, or the Camera panel's), the light's direction as azimuth and elevation, for
+// shadow volumes a toggle that moves the camera into a shadow, and a toggle that shows the Camera
+// view's shadows alone.
+#include <utility>
+#include <vector>
 #include <QWidget>
 #include <glm/glm.hpp>
 
@@ -22,7 +26,9 @@ class ControlsPanel : public QWidget {
 public:
     explicit ControlsPanel(QWidget* parent = nullptr);
 
-    InspectionRequest request() const;  // method, settings, resolution, bias
+    // Method, settings (the filter settings the chosen filter does not read left out: their defaults
+    // apply), resolution, bias.
+    InspectionRequest request() const;
     glm::dvec3 light_direction() const;
     void set_light_direction(const glm::dvec3& direction);  // without emitting changed()
     void set_method(const QString& name);
@@ -42,10 +48,18 @@ signals:
 
 private:
     void rebuild_settings();
+    QWidget* connected_editor(const SettingSpec& spec, QWidget* parent);
+    void show_filter_settings();                // the Filter group's rows the chosen filter reads
+    bool applies(const QWidget* editor) const;  // is the editor's setting read under the chosen filter?
 
     QComboBox* method_;
-    QFormLayout* settings_form_;
     QWidget* settings_box_;
+    QWidget* settings_content_ = nullptr;  // the method's settings, rebuilt per method
+    QFormLayout* settings_form_ = nullptr;  // its own, then under the Filter and Depth bias headers
+    QLabel* filter_header_ = nullptr;       // the Filter group's first row; none for a geometric technique
+    std::vector<std::pair<QLabel*, QWidget*>> filter_rows_;  // the Filter group's, shown or not
+    QComboBox* filter_ = nullptr;                            // the lookup's filter; none for a technique
+    std::vector<QWidget*> setting_editors_;                  // every setting's, named by the setting
     QComboBox* resolution_;
     QDoubleSpinBox* bias_;
     QSlider* azimuth_;

@@ -42,13 +42,28 @@ const char* preset_title(SpacePreset preset) {
 ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     : QWidget(parent),
       chooser_(new QComboBox(this)),
+      error_(new QComboBox(this)),
       aliasing_(new QComboBox(this)),
+      texture_(new QComboBox(this)),
       overlay_(new QComboBox(this)),
       preset_(new QComboBox(this)),
       scene_in_ppls_(new QCheckBox("Scene in PPLS", this)),
       widget_(new QVTKOpenGLNativeWidget(this)) {
     for (ViewKind v : all_views()) chooser_->addItem(view_title(v), static_cast<int>(v));
     chooser_->setObjectName("viewChooser");
+    error_->addItem("Automatic", static_cast<int>(ErrorShown::automatic));
+    error_->addItem("Verdicts", static_cast<int>(ErrorShown::verdicts));
+    error_->addItem("Signed visibility", static_cast<int>(ErrorShown::signed_visibility));
+    error_->setObjectName("errorChooser");
+    error_->setToolTip("each pixel's verdict (false shadow, false light, over Lloyd's m), or its visibility error, "
+                       "method − reference (blue too dark, red too light); automatic: signed where shadows are soft "
+                       "(a light with a size, or a filter other than hard)");
+    texture_->addItem("Depth", static_cast<int>(TextureShown::depth));
+    texture_->addItem("Moments: mean", static_cast<int>(TextureShown::moment_mean));
+    texture_->addItem("Moments: deviation", static_cast<int>(TextureShown::moment_deviation));
+    texture_->setObjectName("textureChooser");
+    texture_->setToolTip("the stored depth, or what a vsm or evsm filter reads: its blurred moments' mean, or their "
+                         "standard deviation √(m₂ − m₁²), non-zero where the blur mixes depths");
     aliasing_->addItem("m", static_cast<int>(AliasingShown::total));
     aliasing_->addItem("m: perspective factor", static_cast<int>(AliasingShown::perspective));
     aliasing_->addItem("m: projection factor", static_cast<int>(AliasingShown::projection));
@@ -81,7 +96,9 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     layout->setSpacing(2);
     auto* choosers = new QHBoxLayout;
     choosers->addWidget(chooser_, 1);
+    choosers->addWidget(error_);
     choosers->addWidget(aliasing_);
+    choosers->addWidget(texture_);
     choosers->addWidget(overlay_);
     choosers->addWidget(preset_);
     choosers->addWidget(scene_in_ppls_);
@@ -91,7 +108,7 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
         forget_camera();  // another view or preset starts from its own camera
         emit viewChosen();
     });
-    for (QComboBox* box : {aliasing_, overlay_})
+    for (QComboBox* box : {error_, aliasing_, texture_, overlay_})
         connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
     connect(scene_in_ppls_, &QCheckBox::toggled, this, [this] { emit viewChosen(); });
 
@@ -127,7 +144,9 @@ void ViewPanel::resizeEvent(QResizeEvent* event) {
 
 // Each view shows the choosers it reads, however it was chosen.
 void ViewPanel::show_choosers_for_view() {
+    error_->setVisible(view() == ViewKind::error);
     aliasing_->setVisible(view() == ViewKind::error);
+    texture_->setVisible(view() == ViewKind::shadow_map);
     overlay_->setVisible(view() == ViewKind::camera);
     preset_->setVisible(is_space_view(view()));
     scene_in_ppls_->setVisible(view() == ViewKind::ppls);
@@ -143,7 +162,13 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     ViewOptions sized = options;
     sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
     sized.height = std::max(36, static_cast<int>(sized.width / inspection.scene.camera.aspect));
+    sized.error = static_cast<ErrorShown>(error_->currentData().toInt());
     sized.aliasing = static_cast<AliasingShown>(aliasing_->currentData().toInt());
+    sized.texture = static_cast<TextureShown>(texture_->currentData().toInt());
+    // A chooser the inspection gives nothing to choose is greyed: m beside the signed error, the
+    // moments of a filter that reads none.
+    aliasing_->setEnabled(!shows_signed_error(inspection, sized.error));
+    texture_->setEnabled(inspection.has_map() && inspection.lookup.filter.reads_moments());
     sized.overlay = static_cast<MapOverlay>(overlay_->currentData().toInt());
     sized.preset = preset();
     sized.scene_in_ppls = scene_in_ppls_->isChecked();

@@ -1,7 +1,8 @@
 #pragma once
-// One view of the window: a chooser for which view it shows (and, for the Error view, which
-// aliasing its heat map paints; for World, Light space and PPLS, how the camera looks at it; for
-// PPLS, whether the scene is drawn), over a VTK widget drawing it. An orbit the user leaves in
+// One view of the window: a chooser for which view it shows (and, for the Error view, verdicts or
+// the signed visibility error, and which aliasing its heat map paints; for the Shadow map view, the
+// depth or the moments a vsm or evsm filter reads; for World, Light space and PPLS, how the camera
+// looks at it; for PPLS, whether the scene is drawn), over a VTK widget drawing it. An orbit the user leaves in
 // World, Light space or PPLS is kept across redraws until the view or its preset changes.
 #include <optional>
 #include <vector>
@@ -57,7 +58,9 @@ private:
 
     std::vector<vtkSmartPointer<vtkHandleWidget>> handles_;
     QComboBox* chooser_;
-    QComboBox* aliasing_;  // the Error view's heat map: m or one of its factors
+    QComboBox* error_;     // the Error view: automatic, verdicts or the signed visibility error
+    QComboBox* aliasing_;  // the Error view's heat map: m or one of its factors (verdicts only)
+    QComboBox* texture_;   // the Shadow map view: depth, or the moments' mean or deviation (vsm, evsm)
     QComboBox* overlay_;   // the Camera view: shadows alone, or the map per pixel, or texels per pixel
     QComboBox* preset_;    // World, Light space, PPLS: orbit, from the light, side
     QCheckBox* scene_in_ppls_;

@@ -1,29 +1,23 @@
-// The Error view: the camera image measured against the exact reference. Misclassified pixels are
-// painted by kind (error_colours.hpp: false shadow blue, false light green, each grown to a 3x3 block
-// so that a lone pixel is seen) and named in a legend. For a map the other receiver pixels show
-// Lloyd's m, or the factor of it the options choose, as a heat map (log scale, 1/8 to 8, its colour
-// bar at the top right), judged with the inspection's bias (slope-scaled per pixel unless a constant
-// was chosen); a geometric technique has no texels, so its agreeing pixels are light grey where lit
-// and dark grey where shadowed. Where no surface is seen, a neutral mid grey.
+// The Error view: the camera image measured against the exact reference, in one of two ways
+// (ErrorShown). The verdicts: misclassified pixels are painted by kind (error_colours.hpp: false
+// shadow blue, false light green, each grown to a 3x3 block so that a lone pixel is seen) and named
+// in a legend. For a map the other receiver pixels show Lloyd's m, or the factor of it the options
+// choose, as a heat map (log scale, 1/8 to 8, its colour bar at the top left), judged through the
+// inspection's lookup (its filter and bias); a geometric technique has no texels, so its agreeing
+// pixels are light grey where lit and dark grey where shadowed. The signed visibility error, where
+// shadows are soft (a verdict of a penumbra pixel says little): each judged pixel's method −
+// reference visibility on a diverging ramp, blue too dark, white exact, red too light, with the RMSE,
+// MAE and the reference's own noise. Where no surface is judged, the greys of the verdicts.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 
-#include <vtkActor2D.h>
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkCoordinate.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkPolyDataMapper2D.h>
 #include <vtkRenderer.h>
-#include <vtkTextActor.h>
-#include <vtkTextProperty.h>
-#include <vtkUnsignedCharArray.h>
 
 #include "metrics/shadow_error.hpp"
 #include "reference/exact_shadows.hpp"
+#include "views/colour_bar.hpp"
 #include "views/error_colours.hpp"
 #include "views/space_parts.hpp"
 #include "views/view_parts.hpp"
@@ -54,13 +48,17 @@ Shown shown(const ShadowError& e, AliasingShown which) {
     return {e.m_image, e.m, "m"};
 }
 
+Rgb unjudged_colour(const ReferenceImage& ref, size_t i) {
+    return ref.visible[i] ? colours::kNotJudged : colours::kNotVisible;
+}
+
 Rgb pixel_colour(const ShadowError& e, const ReferenceImage& ref, const std::vector<float>& heat_image, bool has_map,
                  size_t i) {
     if (e.verdicts[i] == PixelVerdict::agree) {
         if (has_map) return heat(heat_position(heat_image[i]));
         return ref.lit[i] ? colours::kAgreeLit : colours::kAgreeShadowed;
     }
-    return ref.visible[i] ? colours::kNotJudged : colours::kNotVisible;
+    return unjudged_colour(ref, i);
 }
 
 // Each misclassified pixel as a 3x3 block of its kind's colour; false light drawn last, on top.
@@ -86,6 +84,15 @@ RgbImage paint(const ShadowError& e, const ReferenceImage& ref, const std::vecto
     return image;
 }
 
+RgbImage paint_signed_error(const VisibilityError& v, const ReferenceImage& ref) {
+    RgbImage image(ref.width, ref.height);
+    for (size_t i = 0; i < ref.visible.size(); ++i) {
+        const Rgb c = v.image[i] >= 0.0f ? colours::signed_error_colour(v.signed_error[i]) : unjudged_colour(ref, i);
+        std::copy(c.begin(), c.end(), image.rgb.begin() + 3 * i);
+    }
+    return image;
+}
+
 glm::dvec3 unit_colour(const error_colours::Colour& c) { return glm::dvec3(c[0], c[1], c[2]) / 255.0; }
 
 void add_misclassified_legend(vtkRenderer* renderer) {
@@ -93,83 +100,51 @@ void add_misclassified_legend(vtkRenderer* renderer) {
                           {unit_colour(colours::kFalseLight), "false light (leak)"}});
 }
 
-// The colour bar, hung from the view's top-left corner below the legend (offsets in pixels, so that
-// it stays there when the window is resized): the ramp, its ticks below, the meaning of each side
-// above (two lines each).
-constexpr int kBarWidth = 300, kBarHeight = 10, kBarSteps = 96, kBarLeft = 8;
-constexpr int kBarTop = 82;  // below the legend's two lines and the side labels' two
-
-void hang_from_top_left(vtkCoordinate* position, vtkCoordinate* corner, double dx, double dy) {
-    position->SetCoordinateSystemToDisplay();
-    position->SetReferenceCoordinate(corner);
-    position->SetValue(dx, dy);
-}
-
-vtkSmartPointer<vtkActor2D> ramp() {
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkCellArray> quads;
-    vtkNew<vtkUnsignedCharArray> colour;
-    colour->SetNumberOfComponents(3);
-    for (int i = 0; i < kBarSteps; ++i) {
-        const double x0 = kBarWidth * static_cast<double>(i) / kBarSteps, x1 = kBarWidth * (i + 1.0) / kBarSteps;
-        const vtkIdType first = points->GetNumberOfPoints();
-        for (const auto& [x, y] : {std::pair{x0, 0.0}, {x1, 0.0}, {x1, double(kBarHeight)}, {x0, double(kBarHeight)}})
-            points->InsertNextPoint(x, y, 0.0);
-        const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
-        quads->InsertNextCell(4, ids);
-        const Rgb c = heat((i + 0.5) / kBarSteps);
-        colour->InsertNextTuple3(c[0], c[1], c[2]);
-    }
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetPolys(quads);
-    data->GetCellData()->SetScalars(colour);
-    vtkNew<vtkPolyDataMapper2D> mapper;
-    mapper->SetInputData(data);
-    mapper->SetScalarModeToUseCellData();
-    mapper->SetColorModeToDirectScalars();
-    auto actor = vtkSmartPointer<vtkActor2D>::New();
-    actor->SetMapper(mapper);
-    return actor;
-}
-
-enum class Anchor { left, centre, right };
-
-vtkSmartPointer<vtkTextActor> bar_label(const std::string& text, int font_size, Anchor anchor, bool above) {
-    auto label = vtkSmartPointer<vtkTextActor>::New();
-    label->SetInput(text.c_str());
-    vtkTextProperty* style = label->GetTextProperty();
-    style_overlay_text(style, font_size);
-    if (anchor == Anchor::left) style->SetJustificationToLeft();
-    if (anchor == Anchor::centre) style->SetJustificationToCentered();
-    if (anchor == Anchor::right) style->SetJustificationToRight();
-    if (above)
-        style->SetVerticalJustificationToBottom();
-    else
-        style->SetVerticalJustificationToTop();
-    return label;
-}
-
-void add_colour_bar(vtkRenderer* renderer, const char* quantity) {
-    vtkNew<vtkCoordinate> corner;
-    corner->SetCoordinateSystemToNormalizedViewport();
-    corner->SetValue(0.0, 1.0);
-    const double bottom = -kBarTop - kBarHeight;
-    const auto place = [&](vtkActor2D* actor, double dx, double dy) {
-        hang_from_top_left(actor->GetPositionCoordinate(), corner, dx, dy);
-        renderer->AddViewProp(actor);
-    };
-    place(ramp(), kBarLeft, bottom);
-    const std::array<const char*, 7> ticks{"1/8", "1/4", "1/2", "1", "2", "4", "8"};
-    for (size_t k = 0; k < ticks.size(); ++k) {
-        const Anchor anchor = k == 0 ? Anchor::left : k + 1 == ticks.size() ? Anchor::right : Anchor::centre;
-        place(bar_label(ticks[k], 11, anchor, false), kBarLeft + kBarWidth * k / (ticks.size() - 1.0), bottom - 2);
-    }
+void add_aliasing_bar(vtkRenderer* renderer, const char* quantity) {
     const std::string q = quantity;
-    place(bar_label("over-sampled (" + q + " < 1):\ntexel smaller than pixel", 12, Anchor::left, true), kBarLeft,
-          -kBarTop + 2);
-    place(bar_label("under-sampled (" + q + " > 1):\ntexel larger than pixel", 12, Anchor::right, true),
-          kBarLeft + kBarWidth, -kBarTop + 2);
+    add_colour_bar(renderer, {.ramp = heat,
+                              .ticks = {"1/8", "1/4", "1/2", "1", "2", "4", "8"},
+                              .low_side = "over-sampled (" + q + " < 1):\ntexel smaller than pixel",
+                              .high_side = "under-sampled (" + q + " > 1):\ntexel larger than pixel"});
+}
+
+void add_signed_error_bar(vtkRenderer* renderer) {
+    add_colour_bar(renderer, {.ramp = [](double t) { return colours::signed_error_colour(2.0 * t - 1.0); },
+                              .ticks = {"−1", "−0.5", "0", "+0.5", "+1"},
+                              .low_side = "too dark (< 0):\nmethod darker",
+                              .high_side = "too light (> 0):\nmethod lighter",
+                              .title = "visibility error: method − reference"});
+}
+
+// What the method is judged against, and with which lookup: "focused 2048², filter pcf, against the
+// soft reference (64 rays per pixel)".
+std::string judged_as(const Inspection& in, const ReferenceImage& ref) {
+    char text[200];
+    if (in.has_map())
+        std::snprintf(text, sizeof text, "%s %d², filter %s", in.name().c_str(), in.resolution,
+                      to_string(in.lookup.filter.kind));
+    else
+        std::snprintf(text, sizeof text, "%s", in.name().c_str());
+    if (ref.light_samples == 0) return text + std::string(", against the exact reference");
+    return text + (", against the soft reference (" + std::to_string(ref.light_samples) + " rays per pixel)");
+}
+
+// Why the automatic choice paints the signed error (soft_shadows).
+std::string why_signed(const Inspection& in) {
+    if (in.scene.light.is_area()) return "the light has a size";
+    return std::string("filter ") + to_string(in.lookup.filter.kind) + " is not hard";
+}
+
+std::string visibility_summary(const VisibilityError& v) {
+    char text[200];
+    std::snprintf(text, sizeof text, "RMSE %.3f, MAE %.3f (reference noise %.3f)", v.rmse, v.mae, v.reference_noise);
+    std::string out = text;
+    if (v.penumbra_width_ratio) {
+        std::snprintf(text, sizeof text, "; penumbra width ×%.2f", *v.penumbra_width_ratio);
+        out += text;
+    }
+    std::snprintf(text, sizeof text, "; light bleeding %.1f%%", 100 * v.light_bleeding);
+    return out + text;
 }
 
 std::string shares(const ShadowError& e) {
@@ -191,6 +166,13 @@ ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const V
                                             : std::max(1, static_cast<int>(std::lround(width / in.scene.camera.aspect)));
     const ReferenceImage& ref = in.reference(width, height);
     const ShadowError& e = in.error(width, height);
+    if (shows_signed_error(in, options.error)) {
+        show_image(renderer, paint_signed_error(e.visibility, ref));
+        add_signed_error_bar(renderer);
+        const std::string why = options.error == ErrorShown::automatic ? " (signed: " + why_signed(in) + ")" : "";
+        add_caption(renderer, "Error — " + judged_as(in, ref) + why + ": " + visibility_summary(e.visibility));
+        return {};
+    }
     const Shown aliasing = shown(e, options.aliasing);
     show_image(renderer, paint(e, ref, aliasing.image, in.has_map()));
     add_misclassified_legend(renderer);
@@ -198,10 +180,10 @@ ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const V
         add_caption(renderer, "Error — " + in.name() + ": " + shares(e) + "; agreeing pixels grey (light: lit)");
         return {};
     }
-    add_colour_bar(renderer, aliasing.name);
+    add_aliasing_bar(renderer, aliasing.name);
     char caption[160];
-    std::snprintf(caption, sizeof caption, "; %s max %.2f, p95 %.2f", aliasing.name, aliasing.stats.max,
-                  aliasing.stats.p95);
+    std::snprintf(caption, sizeof caption, "; %s max %.2f, p95 %.2f", aliasing.name,
+                  aliasing.stats.max, aliasing.stats.p95);
     add_caption(renderer, "Error — " + in.name() + " " + std::to_string(in.resolution) + "²: " + shares(e) + caption);
     return {};
 }

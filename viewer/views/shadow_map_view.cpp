@@ -2,13 +2,17 @@
 // white), one screen square per texel, with the camera frustum drawn where the map puts it; a
 // texture of several maps (an atlas of cascades) with each tile's border and its label. On a
 // paraboloid map, the tessellation error: the edges of the caster that bow most, straight as drawn
-// and curved as truly seen, with the worst sagitta in texels.
+// and curved as truly seen, with the worst sagitta in texels. For a filter that reads moments (vsm,
+// evsm), the option to paint instead what it reads: the blurred moments' mean, in the depth's greys,
+// or their standard deviation on a heat ramp, non-zero where the blur mixes depths (the edges where
+// Chebyshev's bound lets light bleed).
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <cstdio>
+#include <limits>
 #include <map>
+#include <numbers>
 #include <set>
 
 #include <vtkActor.h>
@@ -19,9 +23,11 @@
 #include <vtkRenderer.h>
 #include <vtkTextProperty.h>
 
+#include "lookup/moment_map.hpp"
 #include "maps/map_lookup.hpp"
 #include "methods/cascade_atlas.hpp"
 #include "raster/paraboloid_edges.hpp"
+#include "views/colour_bar.hpp"
 #include "views/space_parts.hpp"
 #include "views/view_parts.hpp"
 
@@ -43,6 +49,54 @@ RgbImage depth_to_grey(const DepthMap& depth) {
             pixel[0] = pixel[1] = pixel[2] = static_cast<unsigned char>(grey);
         }
     return image;
+}
+
+const glm::dvec3 kBackground{0.12, 0.13, 0.16};
+
+Rgb to_rgb(const glm::dvec3& colour) {
+    const glm::dvec3 scaled = glm::round(255.0 * colour);
+    return {static_cast<unsigned char>(scaled.r), static_cast<unsigned char>(scaled.g),
+            static_cast<unsigned char>(scaled.b)};
+}
+
+// The standard deviations on the heat ramp, 0 black to the texture's largest bright; texels holding
+// no value (NaN: the cross's empty cells) the background.
+RgbImage deviation_to_heat(const DepthMap& deviation, float largest) {
+    const int n = deviation.resolution;
+    RgbImage image(n, n);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const float sigma = deviation.at(x, y);
+            const Rgb colour = std::isnan(sigma) ? to_rgb(kBackground) : heat(largest > 0.0f ? sigma / largest : 0.0);
+            std::copy(colour.begin(), colour.end(), image.at(x, n - 1 - y));
+        }
+    return image;
+}
+
+float largest_value(const DepthMap& texture) {
+    float largest = 0.0f;
+    for (float v : texture.depth)
+        if (!std::isnan(v)) largest = std::max(largest, v);
+    return largest;
+}
+
+// Per texel of the stored texture, the blurred moments' mean or standard deviation in depth units.
+// VSM's moments are the depth's own; EVSM's positive warp μ = E[e^{c⁺d}] is carried back to depth,
+// its mean as ln(μ) / c⁺ and its deviation to first order, σ / (c⁺ μ) (d(e^{c⁺d}) = c⁺ e^{c⁺d} dd).
+DepthMap moment_texture(const Inspection& in, TextureShown shown) {
+    const ShadowFilter& filter = in.lookup.filter;
+    const MomentMap moments = blurred_moments(in.depth, in.setup, filter);
+    const bool exponential = filter.kind == FilterKind::evsm;
+    DepthMap texture{.resolution = moments.resolution, .depth = std::vector<float>(moments.moments.size())};
+    for (size_t i = 0; i < moments.moments.size(); ++i) {
+        const double mean = moments.moments[i].x, second = moments.moments[i].y;
+        const double sigma = std::sqrt(std::max(0.0, second - mean * mean));  // √(m₂ − m₁²)
+        if (shown == TextureShown::moment_mean)
+            texture.depth[i] = float(exponential ? std::log(mean) / filter.evsm_positive : mean);
+        else
+            texture.depth[i] = float(exponential ? sigma / (filter.evsm_positive * mean) : sigma);
+    }
+    return texture;
 }
 
 // Texel edges as lines: x = k - 1/2 and y = k - 1/2 in image pixels, just above the image.
@@ -246,9 +300,10 @@ std::string draw_tessellation_error(vtkRenderer* renderer, const Inspection& in,
     return text + std::string(split);
 }
 
-// The texture as shown, and the setup whose tiles say where each map lies in it.
+// The texture as shown (a value per texel: the depth, or a moment), and the setup whose tiles say
+// where each map lies in it.
 struct ShownTexture {
-    DepthMap depth;
+    DepthMap texture;
     ShadowSetup setup;
 };
 
@@ -257,12 +312,14 @@ struct ShownTexture {
 constexpr std::array<glm::ivec2, 6> kCrossCells{{{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}}};
 
 // A cube's six faces moved from their 3 x 2 atlas into the cross, texel for texel: the shown
-// texture is four faces wide (a face keeps its side, rounded to whole texels).
-ShownTexture as_cross(const Inspection& in) {
+// texture is four faces wide (a face keeps its side, rounded to whole texels); the cells no face
+// takes hold `empty`.
+ShownTexture as_cross(const Inspection& in, const DepthMap& stored_texture, float empty) {
     const int side = static_cast<int>(std::lround(tile_resolution(in.setup.maps.front(), in.resolution)));
     const int shown_n = 4 * side;
-    ShownTexture shown{.depth = {.resolution = shown_n, .depth = std::vector<float>(size_t(shown_n) * shown_n, 1.0f)},
-                       .setup = in.setup};
+    ShownTexture shown{
+        .texture = {.resolution = shown_n, .depth = std::vector<float>(size_t(shown_n) * shown_n, empty)},
+        .setup = in.setup};
     for (ShadowMap& map : shown.setup.maps) {
         const glm::ivec2 cell = kCrossCells[map.cube_face];
         const ShadowMap& stored = in.setup.maps[&map - shown.setup.maps.data()];
@@ -271,32 +328,99 @@ ShownTexture as_cross(const Inspection& in) {
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x) {
                 const glm::ivec2 texel = texel_of(stored, (glm::dvec2(x, y) + 0.5) / double(side), in.resolution);
-                shown.depth.depth[size_t(corner.y + y) * shown_n + corner.x + x] = in.depth.at(texel.x, texel.y);
+                shown.texture.depth[size_t(corner.y + y) * shown_n + corner.x + x] =
+                    stored_texture.at(texel.x, texel.y);
             }
     }
     return shown;
 }
 
-ShownTexture shown_texture(const Inspection& in) {
-    if (in.setup.selection.rule == MapSelection::Rule::cube_face && in.setup.maps.size() == 6) return as_cross(in);
-    return {in.depth, in.setup};
+ShownTexture shown_texture(const Inspection& in, const DepthMap& stored_texture, float empty) {
+    if (in.setup.selection.rule == MapSelection::Rule::cube_face && in.setup.maps.size() == 6)
+        return as_cross(in, stored_texture, empty);
+    return {stored_texture, in.setup};
+}
+
+bool any_paraboloid(const ShadowSetup& setup) {
+    return std::any_of(setup.maps.begin(), setup.maps.end(),
+                       [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
+}
+
+// What the view paints, and its words for the caption after the method's name (none for the depth).
+struct PaintedTexture {
+    ShownTexture shown;
+    RgbImage image;
+    std::string caption;
+    bool on_heat_ramp = false;  // whose bright end is yellow: the frustum is drawn in another colour
+};
+
+const glm::dvec3 kFrustumOnGrey{1.0, 0.85, 0.1}, kFrustumOnHeat{0.3, 0.8, 1.0};
+
+// The depth, as stored.
+PaintedTexture painted_depth(const Inspection& in, std::string caption) {
+    ShownTexture shown = shown_texture(in, in.depth, 1.0f);
+    RgbImage image = depth_to_grey(shown.texture);
+    return {std::move(shown), std::move(image), std::move(caption)};
+}
+
+// The moments the filter reads, with their colour bar (the deviation) and the caption's words.
+PaintedTexture painted_moments(vtkRenderer* renderer, const Inspection& in, TextureShown which) {
+    const ShadowFilter& filter = in.lookup.filter;
+    const bool exponential = filter.kind == FilterKind::evsm;
+    const std::string blur = " over a " + std::to_string(filter.kernel_size) + "×" +
+                             std::to_string(filter.kernel_size) + " box";
+    const float empty = which == TextureShown::moment_mean ? 1.0f : std::numeric_limits<float>::quiet_NaN();
+    ShownTexture shown = shown_texture(in, moment_texture(in, which), empty);
+    if (which == TextureShown::moment_mean) {
+        RgbImage image = depth_to_grey(shown.texture);
+        return {std::move(shown), std::move(image),
+                (exponential ? "EVSM's mean m₁ of e^(c⁺d)" + blur + ", as a depth ln(m₁)/c⁺"
+                             : "VSM's mean m₁ of the depth" + blur) +
+                    " (near dark, far light)"};
+    }
+    const std::string deviation = exponential ? "σ/(c⁺ m₁)" : "√(m₂ − m₁²)";
+    const float largest = largest_value(shown.texture);
+    char middle[32], top[32];
+    std::snprintf(middle, sizeof middle, "%.2g", largest / 2);
+    std::snprintf(top, sizeof top, "%.2g", largest);
+    add_colour_bar(renderer, {.ramp = heat,
+                              .ticks = {"0", middle, top},
+                              .low_side = "one depth\nunder the blur",
+                              .high_side = "depths differ:\nlight may bleed",
+                              .title = any_paraboloid(in.setup)  // its legend takes the title's row
+                                           ? ""
+                                           : "standard deviation " + deviation + ", in depth units"});
+    RgbImage image = deviation_to_heat(shown.texture, largest);
+    return {std::move(shown), std::move(image),
+            (exponential ? "EVSM's standard deviation of e^(c⁺d)" + blur + ", as a depth " + deviation
+                         : "VSM's standard deviation " + deviation + " of the depth" + blur),
+            true};
+}
+
+PaintedTexture painted_texture(vtkRenderer* renderer, const Inspection& in, TextureShown which) {
+    if (which == TextureShown::depth) return painted_depth(in, "");
+    if (!in.lookup.filter.reads_moments())
+        return painted_depth(in,
+                             std::string("depth (filter ") + to_string(in.lookup.filter.kind) + " reads no moments)");
+    return painted_moments(renderer, in, which);
 }
 
 }  // namespace
 
 const glm::dvec3 kTileBorder{0.2, 0.9, 0.5};
 
-ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
-    renderer->SetBackground(0.12, 0.13, 0.16);
+ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
+    renderer->SetBackground(kBackground.r, kBackground.g, kBackground.b);
     if (!in.has_map()) {
         add_caption(renderer, in.title() + ": no shadow map (a geometric technique; see the Stencil count view)");
         return {};
     }
     ViewReport report;
     std::string sagittas;  // per paraboloid map: the worst sagitta, for the caption
-    const ShownTexture shown = shown_texture(in);
-    const int n = shown.depth.resolution;
-    show_image(renderer, depth_to_grey(shown.depth));
+    const PaintedTexture painted = painted_texture(renderer, in, options.texture);
+    const ShownTexture& shown = painted.shown;
+    const int n = shown.texture.resolution;
+    show_image(renderer, painted.image);
     for (size_t i = 0; i < shown.setup.maps.size(); ++i) {  // the camera frustum where each linear map puts it
         const ShadowMap& map = shown.setup.maps[i];
         if (map.projection == Projection::paraboloid) {
@@ -307,14 +431,13 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
         }
         // Cut to the map's tile: what lies outside the map is not in it.
         const Placement in_tile{.to_space = pixels_from_world(map, n), .clip = tile_in_pixels(map, n)};
-        auto frustum = actor_for(geometry_polydata(in.inputs.frustum, in_tile), glm::dvec3(1.0, 0.85, 0.1));
+        auto frustum = actor_for(geometry_polydata(in.inputs.frustum, in_tile),
+                                 painted.on_heat_ramp ? kFrustumOnHeat : kFrustumOnGrey);
         frustum->GetProperty()->SetLineWidth(2.0f);
         renderer->AddActor(frustum);
     }
     if (shown.setup.maps.size() > 1) draw_tiles(renderer, shown.setup, n);
-    const bool paraboloids = std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
-                                         [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
-    if (paraboloids)
+    if (any_paraboloid(in.setup))
         add_legend(renderer, {{kChordColour, "an edge as a GPU draws it (projected ends joined straight)"},
                               {kArcColour, "the same edge as the map sees it (its true arc)"}});
     vtkNew<TexelGridToggle> toggle;
@@ -325,10 +448,13 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in) {
     const std::string cross =
         n != in.resolution ? " (stored as 3 x 2, shown unfolded as a cross: +y above, -x +z +x -z across, -y below)"
                            : "";
+    const std::string words = painted.caption.empty() ? "" : ": " + painted.caption;
+    const char* frustum_words = painted.on_heat_ramp ? "camera frustum in blue; " : "camera frustum in yellow; ";
     const bool linear_maps = !std::all_of(in.setup.maps.begin(), in.setup.maps.end(),
                                           [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
-    add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + maps + cross + " (" +
-                              (linear_maps ? "camera frustum in yellow; " : "") +
+    add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + words +
+                              maps + cross + " (" +
+                              (linear_maps ? frustum_words : "") +
                               (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
                               "texel grid when zoomed in)" + sagittas);
     return report;

@@ -96,6 +96,14 @@ std::string map_name(const ShadowSetup& setup, size_t i) {
     }
 }
 
+bool soft_shadows(const Inspection& in) {
+    return in.scene.light.is_area() || (in.has_map() && in.lookup.filter.kind != FilterKind::hard);
+}
+
+bool shows_signed_error(const Inspection& in, ErrorShown shown) {
+    return shown == ErrorShown::automatic ? soft_shadows(in) : shown == ErrorShown::signed_visibility;
+}
+
 bool looks_through_scene_camera(ViewKind view) { return view == ViewKind::camera || view == ViewKind::texels; }
 
 bool shows_steps(ViewKind view) { return view == ViewKind::world || view == ViewKind::light || view == ViewKind::ppls; }
@@ -105,7 +113,7 @@ ViewReport build_view(vtkRenderer* renderer, const Inspection& in, ViewKind view
         throw std::invalid_argument("method " + in.name() + " has no step '" + options.step + "'");
     switch (view) {
         case ViewKind::camera: return build_camera_view(renderer, in, options);
-        case ViewKind::shadow_map: return build_shadow_map_view(renderer, in);
+        case ViewKind::shadow_map: return build_shadow_map_view(renderer, in, options);
         case ViewKind::texels: return build_texels_view(renderer, in);
         case ViewKind::error: return build_error_view(renderer, in, options);
         case ViewKind::stencil: return build_stencil_view(renderer, in);

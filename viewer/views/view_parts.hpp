@@ -17,7 +17,7 @@ namespace shadowlab {
 
 ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
 ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options);
-ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in);
+ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
 ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in);
 ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
 ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in);
