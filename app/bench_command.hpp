@@ -1,7 +1,8 @@
 #pragma once
 // `shadowlab bench SCENE... [--methods a,b] [--resolutions 256,512,...] [--size WxH] --out DIR`:
 // every method at every resolution on every scene; DIR/bench.csv, DIR/bench.png (error against
-// cost, one line per method) and DIR/bench_aliasing.png (max perspective m against cost).
+// cost, one line per method) and DIR/bench_aliasing.png (max perspective m against cost). With
+// --filters: the filters' error against their cost instead (filter_bench.hpp).
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@ struct BenchOptions {
     std::vector<int> resolutions{256, 512, 1024, 2048, 4096};
     int width = 640, height = 360;
     std::string out_dir;
+    bool filters = false;  // each filter instead of each resolution (filter_bench.hpp)
 };
 
 void run_bench(const BenchOptions& options);

@@ -7,10 +7,12 @@
 #include <CLI/CLI.hpp>
 
 #include "bench_command.hpp"
+#include "filter_bench.hpp"
 #include "gui/inspector_app.hpp"
 #include "inspect_command.hpp"
 #include "lesson_command.hpp"
 #include "measure_command.hpp"
+#include "metrics/bias_sweep.hpp"
 #include "registry/method.hpp"
 #include "render_command.hpp"
 #include "shimmer_command.hpp"
@@ -79,15 +81,28 @@ int main(int argc, char** argv) {
     bench_cmd->add_option("--resolutions", bench.resolutions, "map resolutions, comma-separated")->delimiter(',')->capture_default_str();
     bench_cmd->add_option("--size", bench_size, "camera image size WxH")->capture_default_str();
     bench_cmd->add_option("--out", bench.out_dir, "output directory")->required();
+    bench_cmd->add_flag("--filters", bench.filters,
+                        "each filter at a few kernel sizes (the methods at the first resolution): visibility error "
+                        "against lookup cost");
 
     shadowlab::SweepOptions sweep;
     std::string sweep_size = "480x270";
-    CLI::App* sweep_cmd = app.add_subcommand("sweep", "light from perpendicular to parallel with the view, and far/near from 10 to 1e7");
+    CLI::App* sweep_cmd = app.add_subcommand(
+        "sweep", "light from perpendicular to parallel with the view, and far/near from 10 to 1e7; or, with --bias, a depth bias");
     sweep_cmd->add_option("scene", sweep.scene_file, "scene file (JSON)")->required();
     sweep_cmd->add_option("--methods", sweep.methods, "methods, comma-separated (default: all)")->delimiter(',');
     sweep_cmd->add_option("--resolution,-r", sweep.resolution, "map resolution")->capture_default_str();
     sweep_cmd->add_option("--size", sweep_size, "camera image size WxH")->capture_default_str();
     sweep_cmd->add_option("--out", sweep.out_dir, "output directory")->required();
+    std::vector<std::string> sweep_pairs;
+    CLI::Option* sweep_bias = sweep_cmd->add_flag(
+        "--bias", sweep.bias,
+        "instead: acne and peter panning against a depth bias setting, each map method at a ladder of its values");
+    sweep_cmd->add_option("--bias-setting", sweep.bias_setting, "with --bias: bias_slope | bias_normal | bias_constant")
+        ->capture_default_str()
+        ->check(CLI::IsMember(shadowlab::kBiasSettings))
+        ->needs(sweep_bias);
+    sweep_cmd->add_option("--set", sweep_pairs, "with --bias: a method setting, key=value (repeatable)")->needs(sweep_bias);
 
     shadowlab::RenderOptions render;
     std::vector<std::string> render_pairs;
@@ -102,6 +117,14 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--bias", render.bias, "depth bias in world units along the light (default: slope-scaled per pixel)");
     render_cmd->add_option("--aliasing", render.aliasing,
                            "the Error view's heat map: total (m) | perspective | projection (its factors)")
+        ->capture_default_str();
+    render_cmd->add_option("--error", render.error,
+                           "the Error view: verdicts (false shadow, false light, m) | signed (visibility error, "
+                           "method − reference) | auto (signed where shadows are soft)")
+        ->capture_default_str();
+    render_cmd->add_option("--texture", render.texture,
+                           "the Shadow map view: depth | mean | deviation (the blurred moments a vsm or evsm "
+                           "filter reads)")
         ->capture_default_str();
     render_cmd->add_option("--light", render.light,
                            "the light's direction AZ,EL in degrees: azimuth about +y from +x toward +z, elevation "
@@ -185,12 +208,13 @@ int main(int argc, char** argv) {
         }
         if (app.got_subcommand(sweep_cmd)) {
             parse_size(sweep_size, sweep.width, sweep.height);
+            sweep.settings = parse_settings(sweep_pairs);
             shadowlab::run_sweep(sweep);
             return 0;
         }
         if (app.got_subcommand(bench_cmd)) {
             parse_size(bench_size, bench.width, bench.height);
-            shadowlab::run_bench(bench);
+            bench.filters ? shadowlab::run_filter_bench(bench) : shadowlab::run_bench(bench);
             return 0;
         }
         if (app.got_subcommand(measure_cmd)) {

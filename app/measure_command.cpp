@@ -26,6 +26,40 @@ Json to_json(const MapBreakdown& b) {
     return maps;
 }
 
+// Against the reference's visibility (soft for an area light): the error, the reference's own noise.
+Json to_json(const VisibilityError& v) {
+    return {{"rmse", v.rmse},
+            {"mae", v.mae},
+            {"mean_signed", v.mean_signed},
+            {"reference_noise", v.reference_noise},
+            {"penumbra_width_ratio", v.penumbra_width_ratio ? Json(*v.penumbra_width_ratio) : Json(nullptr)},
+            {"light_bleeding", v.light_bleeding}};
+}
+
+// The filter and the bias the lookups applied.
+Json to_json(const ShadowLookup& l) {
+    const ShadowFilter& f = l.filter;
+    Json filter = {{"kind", to_string(f.kind)}, {"taps", f.taps()}};
+    if (f.kind == FilterKind::pcf) {
+        filter["kernel"] = to_string(f.kernel);
+        filter["kernel_size"] = f.kernel_size;
+        filter["radius"] = f.radius_world > 0.0 ? Json({{"world", f.radius_world}}) : Json({{"texels", f.radius_texels}});
+    }
+    if (f.kind == FilterKind::pcss) filter["kernel_size"] = f.kernel_size;
+    if (f.reads_moments()) {
+        filter["kernel_size"] = f.kernel_size;
+        filter["min_variance"] = f.min_variance;
+        filter["bleed_reduction"] = f.bleed_reduction;
+    }
+    if (f.kind == FilterKind::evsm) filter["exponents"] = {f.evsm_positive, f.evsm_negative};
+    return {{"filter", filter},
+            {"bias",
+             {{"constant", l.bias.constant},
+              {"slope_scale", l.bias.slope_scale},
+              {"normal_offset_texels", l.bias.normal_offset},
+              {"receiver_plane", l.bias.receiver_plane}}}};
+}
+
 }  // namespace
 
 Json to_json(const Measurement& m) {
@@ -47,8 +81,16 @@ Json to_json(const Measurement& m) {
                 {"limits", to_json(m.limits)},
                 {"bias", m.geometry      ? Json(nullptr)
                          : m.bias >= 0.0 ? Json(m.bias)
-                                         : Json("slope-scaled")},
-                {"receiver_pixels", e.receiver_pixels}};
+                                         : Json(describe(m.lookup.bias))},
+                {"receiver_pixels", e.receiver_pixels},
+                {"visibility", to_json(e.visibility)}};
+    if (!m.geometry) {
+        out["lookup"] = to_json(m.lookup);
+        out["prefilter_ms"] = m.prefilter_ms;
+        out["lookup_ms"] = m.lookup_ms;
+        out["lookup_ns_per_pixel"] = e.receiver_pixels ? 1e6 * m.lookup_ms / double(e.receiver_pixels) : 0.0;
+        out["taps_per_pixel"] = m.taps_per_pixel;
+    }
     if (m.by_map) {
         out["per_map"] = to_json(*m.by_map);
         out["seam_share"] = m.by_map->seam_share();  // of the misclassified pixels, near a boundary between maps
@@ -75,7 +117,7 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
         std::cout << " (geometry, no map), image " << image.x << "x" << image.y << "\n";
     else
         std::cout << " at " << m.resolution << "^2, image " << image.x << "x" << image.y << ", bias "
-                  << (m.bias >= 0.0 ? std::to_string(m.bias) : std::string("slope-scaled")) << "\n";
+                  << (m.bias >= 0.0 ? std::to_string(m.bias) + " (--bias)" : describe(m.lookup.bias)) << "\n";
     std::cout << "  misclassified " << 100 * e.misclassified << "% of " << e.receiver_pixels
               << " receiver pixels (false shadow " << 100 * e.false_shadow << "%, false light " << 100 * e.false_light
               << "%)\n";
@@ -97,6 +139,17 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
         std::cout << "  seams: " << 100 * m.by_map->seam_share() << "% of the misclassified pixels lie within "
                   << kSeamPixels << " pixels of a boundary between maps\n";
     }
+    const VisibilityError& v = e.visibility;
+    std::cout << "  visibility against the " << (v.reference_noise > 0.0 ? "soft" : "hard") << " reference: RMSE "
+              << v.rmse << ", MAE " << v.mae << " (reference noise " << v.reference_noise << "), light bleeding "
+              << 100 * v.light_bleeding << "%";
+    if (v.penumbra_width_ratio) std::cout << ", penumbra width x" << *v.penumbra_width_ratio;
+    std::cout << "\n";
+    if (!m.geometry)
+        std::cout << "  lookup: filter " << to_string(m.lookup.filter.kind) << ", " << m.taps_per_pixel
+                  << " taps per pixel, " << m.lookup_ms << " ms for " << e.receiver_pixels << " pixels"
+                  << (m.prefilter_ms > 0.0 ? ", moments blurred in " + std::to_string(m.prefilter_ms) + " ms" : "")
+                  << "\n";
     if (m.texels_used > 0.0)
         std::cout << "  texels: " << m.texels_used << " in the maps' tiles, of " << double(m.resolution) * m.resolution
                   << " in the texture\n";

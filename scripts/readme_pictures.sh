@@ -64,6 +64,16 @@ x $shadowlab render data/scenes/lamp_room.json --method dpsm --set tessellate=0.
     --out $images/dpsm_camera_tessellated.png
 x $shadowlab render data/scenes/lamp_room.json --method cube --view shadowmap --size 640x360 --out $images/cube_atlas.png
 
+# Soft shadows: hard, PCF and PCSS under a sun 2° wide; the signed error of PCF and PCSS against the
+# soft reference; VSM's blurred moments.
+soft() { x $shadowlab render data/scenes/soft_shadows.json --method focused --size 640x360 "$@"; }
+soft --set filter=hard --view camera --out $images/soft_hard.png
+soft --set filter=pcf --view camera --out $images/soft_pcf.png
+soft --set filter=pcss --set kernel_size=4 --view camera --out $images/soft_pcss.png
+soft --set filter=pcf --view error --error signed --out $images/error_signed_pcf.png
+soft --set filter=pcss --set kernel_size=4 --view error --error signed --out $images/error_signed_pcss.png
+soft --set filter=vsm --set kernel_size=5 --view shadowmap --texture deviation --out $images/moments_vsm.png
+
 [[ ${1:-} == --views ]] && exit 0
 
 # The measured trade: error against cost, error as the light turns parallel to the view, and
@@ -74,5 +84,9 @@ x $shadowlab bench data/scenes/default.json --out "$work/bench"
 cp "$work/bench/bench.png" "$work/bench/bench_aliasing.png" $images/
 x $shadowlab sweep data/scenes/default.json --out "$work/sweep"
 cp "$work/sweep/sweep_angle.png" $images/
+x $shadowlab bench data/scenes/sun_disc.json --filters --resolutions 2048 --size 640x360 --out "$work/filters"
+cp "$work/filters/bench_filters.png" $images/
+x $shadowlab sweep data/scenes/grazing_sun.json --bias --methods focused,psm,lispsm,tsm,xpsm,cascades --out "$work/bias"
+cp "$work/bias/sweep_bias.png" $images/sweep_bias_grazing.png
 x $shadowlab shimmer data/scenes/teaching.json --method lispsm --frames 30 --out "$work/shimmer"
 cp "$work/shimmer/shimmer.png" $images/shimmer_lispsm.png
