@@ -54,6 +54,18 @@ double differing(const std::vector<T>& a, const std::vector<T>& b) {
 const std::vector<std::map<std::string, std::string>> kCascadeVariants{{{"stabilize", "on"}, {"fit", "sphere"}},
                                                                        {{"bounds", "visible"}, {"lambda", "1"}}};
 
+// The lookups: each filter and the biases that read the map's derivatives, on the focused map (and
+// PCF on a warp); a world-length kernel scales with the scene.
+std::vector<std::pair<std::string, std::map<std::string, std::string>>> lookup_variants(double scale) {
+    return {{"focused", {{"filter", "pcf"}, {"pcf_kernel", "poisson"}, {"kernel_size", "4"}, {"filter_radius", "1.5"}}},
+            {"lispsm", {{"filter", "pcf"}, {"pcf_kernel", "tent"}}},
+            {"focused", {{"filter", "pcf"}, {"filter_world_radius", std::to_string(0.3 * scale)}}},
+            {"focused", {{"filter", "vsm"}, {"bleed_reduction", "0.2"}}},
+            {"focused", {{"filter", "evsm"}}},
+            {"focused", {{"filter", "pcss"}}},
+            {"focused", {{"bias_slope", "0"}, {"bias_normal", "1"}, {"bias_receiver_plane", "on"}}}};
+}
+
 struct Verdicts {
     std::vector<uint8_t> visible, lit;
     std::vector<std::vector<PixelVerdict>> per_method;  // in the registry's order
@@ -80,6 +92,10 @@ Verdicts verdicts(const Scene& scene, double scale) {
         v.per_method.push_back(
             measure(context, cascades, resolve_settings("cascades", cascades.settings, set), kResolution, -1.0)
                 .error.verdicts);
+    for (const auto& [name, set] : lookup_variants(scale)) {
+        const Method& m = method_or_throw(name);
+        v.per_method.push_back(measure(context, m, resolve_settings(name, m.settings, set), kResolution, -1.0).error.verdicts);
+    }
     return v;
 }
 
@@ -98,7 +114,8 @@ TEST_P(Invariance, MovedAndScaledSceneKeepsItsVerdicts) {
     for (size_t k = 0; k < expected.per_method.size(); ++k)
         EXPECT_LE(differing(expected.per_method[k], got.per_method[k]), 5e-4)
             << (k < all_methods().size() ? all_methods()[k].name
-                                         : "cascades variant " + std::to_string(k - all_methods().size()));
+                                         : "variant " + std::to_string(k - all_methods().size()) +
+                                               " (cascades, then the lookups)");
 }
 
 std::string configuration_name(const ::testing::TestParamInfo<Invariance::ParamType>& info) {
