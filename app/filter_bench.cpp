@@ -52,19 +52,23 @@ void run_filter_bench(const BenchOptions& o) {
     if (o.scene_files.size() != 1) throw std::invalid_argument("bench --filters: one scene");
     const int resolution = o.resolutions.front();
     limits::check(limits::map_resolution, "--resolutions", resolution);
-    std::vector<const Method*> methods = methods_named(o.methods.empty() ? std::vector<std::string>{"focused"} : o.methods);
+    std::vector<const Method*> methods =
+        methods_named(o.methods.empty() ? std::vector<std::string>{"focused"} : o.methods);
     std::filesystem::create_directories(o.out_dir);
     const std::filesystem::path dir(o.out_dir);
     std::ofstream csv(dir / "bench_filters.csv");
     if (!csv) throw std::runtime_error((dir / "bench_filters.csv").string() + ": cannot write");
-    csv << "method,filter,kernel_size,taps_per_pixel,visibility_rmse,visibility_mae,reference_noise,penumbra_width_ratio,"
-           "light_bleeding,misclassified,prefilter_ms,lookup_ms,fallback\n";
+    csv << "method,filter,kernel_size,taps_per_pixel,visibility_rmse,visibility_mae,reference_noise,"
+           "penumbra_width_ratio,light_bleeding,misclassified,prefilter_ms,lookup_ms,fallback\n";
     const MeasureContext context = prepare_with_progress(o.scene_files.front(), o.width, o.height);
-    ChartSpec chart{"Filters: visibility error against cost (" + std::to_string(resolution) + "², " +
-                        (context.reference.light_samples > 0 ? "soft reference" : "hard reference: the light has no size") + ")",
-                    "lookups per frame: moments' blur + every receiver pixel (ms, both cores)",
-                    "visibility RMSE against the reference", true, false, 900, 600, {},
-                    ChartSpec::LegendCorner::bottom_left};
+    const std::string reference =
+        context.reference.light_samples > 0 ? "soft reference" : "hard reference: the light has no size";
+    ChartSpec chart{
+        .title = "Filters: visibility error against cost (" + std::to_string(resolution) + "², " + reference + ")",
+        .x_title = "lookups per frame: moments' blur + every receiver pixel (ms, both cores)",
+        .y_title = "visibility RMSE against the reference",
+        .log_x = true,
+        .legend = ChartSpec::LegendCorner::bottom_left};
     for (const Method* method : methods) {
         if (!method->makes_maps()) {
             std::cerr << "bench --filters: " << method->name << " has no map to filter: skipped\n";
@@ -76,8 +80,8 @@ void run_filter_bench(const BenchOptions& o) {
                 Overrides overrides = family.settings;
                 overrides["kernel_size"] = std::to_string(n);
                 std::cerr << "bench --filters: " << method->name << " " << family.name << " " << n << "\n";
-                const Measurement m = measure(context, *method, resolve_settings(method->name, method->settings, overrides),
-                                              resolution, -1.0);
+                const Measurement m = measure(
+                    context, *method, resolve_settings(method->name, method->settings, overrides), resolution, -1.0);
                 const VisibilityError& v = m.error.visibility;
                 csv << m.method << ",\"" << family.name << "\"," << n << ',' << m.taps_per_pixel << ',' << v.rmse << ','
                     << v.mae << ',' << v.reference_noise << ','

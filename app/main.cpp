@@ -87,8 +87,9 @@ int main(int argc, char** argv) {
 
     shadowlab::SweepOptions sweep;
     std::string sweep_size = "480x270";
-    CLI::App* sweep_cmd = app.add_subcommand(
-        "sweep", "light from perpendicular to parallel with the view, and far/near from 10 to 1e7; or, with --bias, a depth bias");
+    CLI::App* sweep_cmd = app.add_subcommand("sweep",
+                                             "light from perpendicular to parallel with the view, and far/near from 10 "
+                                             "to 1e7; or, with --bias, a depth bias");
     sweep_cmd->add_option("scene", sweep.scene_file, "scene file (JSON)")->required();
     sweep_cmd->add_option("--methods", sweep.methods, "methods, comma-separated (default: all)")->delimiter(',');
     sweep_cmd->add_option("--resolution,-r", sweep.resolution, "map resolution")->capture_default_str();
@@ -102,7 +103,8 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::IsMember(shadowlab::kBiasSettings))
         ->needs(sweep_bias);
-    sweep_cmd->add_option("--set", sweep_pairs, "with --bias: a method setting, key=value (repeatable)")->needs(sweep_bias);
+    sweep_cmd->add_option("--set", sweep_pairs, "with --bias: a method setting, key=value (repeatable)")
+        ->needs(sweep_bias);
 
     shadowlab::RenderOptions render;
     std::vector<std::string> render_pairs;
@@ -118,13 +120,15 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--aliasing", render.aliasing,
                            "the Error view's heat map: total (m) | perspective | projection (its factors)")
         ->capture_default_str();
-    render_cmd->add_option("--error", render.error,
-                           "the Error view: verdicts (false shadow, false light, m) | signed (visibility error, "
-                           "method − reference) | auto (signed where shadows are soft)")
+    render_cmd
+        ->add_option("--error", render.error,
+                     "the Error view: verdicts (false shadow, false light, m) | signed (visibility error, "
+                     "method − reference) | auto (signed where shadows are soft)")
         ->capture_default_str();
-    render_cmd->add_option("--texture", render.texture,
-                           "the Shadow map view: depth | mean | deviation (the blurred moments a vsm or evsm "
-                           "filter reads)")
+    render_cmd
+        ->add_option("--texture", render.texture,
+                     "the Shadow map view: depth | mean | deviation (the blurred moments a vsm or evsm "
+                     "filter reads)")
         ->capture_default_str();
     render_cmd->add_option("--light", render.light,
                            "the light's direction AZ,EL in degrees: azimuth about +y from +x toward +z, elevation "

@@ -43,7 +43,8 @@ Json to_json(const ShadowLookup& l) {
     if (f.kind == FilterKind::pcf) {
         filter["kernel"] = to_string(f.kernel);
         filter["kernel_size"] = f.kernel_size;
-        filter["radius"] = f.radius_world > 0.0 ? Json({{"world", f.radius_world}}) : Json({{"texels", f.radius_texels}});
+        filter["radius"] =
+            f.radius_world > 0.0 ? Json({{"world", f.radius_world}}) : Json({{"texels", f.radius_texels}});
     }
     if (f.kind == FilterKind::pcss) filter["kernel_size"] = f.kernel_size;
     if (f.reads_moments()) {

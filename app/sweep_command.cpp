@@ -74,8 +74,8 @@ void write_bias_csv(const std::vector<BiasCurve>& curves, const std::filesystem:
         for (size_t i = 0; i < curve.points.size(); ++i) {
             const BiasPoint& p = curve.points[i];
             csv << curve.method << ',' << curve.setting << ',' << p.value << ',' << p.false_shadow << ','
-                << p.false_light << ',' << p.misclassified << ',' << (i == curve.best) << ",\""
-                << describe(p.fallbacks) << "\"\n";
+                << p.false_light << ',' << p.misclassified << ',' << (i == curve.best) << ",\"" << describe(p.fallbacks)
+                << "\"\n";
         }
 }
 

@@ -19,8 +19,8 @@ struct SweepOptions {
     int resolution = 1024;
     int width = 480, height = 270;
     std::string out_dir;
-    bool bias = false;                          // sweep a bias setting, not the light and far/near
-    std::string bias_setting = "bias_slope";    // with `bias`: which
+    bool bias = false;                            // sweep a bias setting, not the light and far/near
+    std::string bias_setting = "bias_slope";      // with `bias`: which
     std::map<std::string, std::string> settings;  // with `bias`: every method's other settings
 };
 

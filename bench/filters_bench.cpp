@@ -29,7 +29,8 @@ const FilterScene& filter_scene() {
         f.scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/default.json");
         f.scene.light.angular_radius_deg = 0.5;
         const Method& focused = method_or_throw("focused");
-        f.setup = focused.compute_maps(gather_inputs(f.scene), resolve_settings("focused", focused.settings, {}), nullptr);
+        f.setup =
+            focused.compute_maps(gather_inputs(f.scene), resolve_settings("focused", focused.settings, {}), nullptr);
         const WorldTriangles triangles = tessellate(f.scene);
         f.depth = rasterize_depth(triangles, caster_flags(f.scene), f.setup, kResolution);
         const ReferenceImage ref = exact_reference(f.scene, triangles, kWidth, kHeight);

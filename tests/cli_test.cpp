@@ -262,7 +262,8 @@ TEST(Cli, SweepBiasWritesEachMethodsCurveItsBestAndAPlot) {
     std::filesystem::remove_all(out);
     const CliResult r = run_cli("sweep " + source_path("data/scenes/box_on_plane.json") +
                                 " --bias --bias-setting bias_normal --methods focused,volumes,lispsm --resolution 256"
-                                " --size 96x54 --out " + out);
+                                " --size 96x54 --out " +
+                                out);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("volumes skipped"), std::string::npos) << "a technique has no bias: " << r.err;
     const std::vector<std::string> csv = lines_of(out + "/sweep_bias.csv");

@@ -81,7 +81,8 @@ TEST(KernelTaps, WeightsSumToOneAndTapsStayInTheirKernel) {
             for (const KernelTap& t : taps) {
                 total += t.weight;
                 EXPECT_GT(t.weight, 0.0);
-                EXPECT_LE(kernel == PcfKernel::poisson ? glm::length(t.offset) : std::max(std::abs(t.offset.x), std::abs(t.offset.y)),
+                EXPECT_LE(kernel == PcfKernel::poisson ? glm::length(t.offset)
+                                                       : std::max(std::abs(t.offset.x), std::abs(t.offset.y)),
                           1.0 + 1e-12);
             }
             EXPECT_NEAR(total, 1.0, 1e-12) << to_string(kernel) << " " << n;
@@ -148,7 +149,8 @@ TEST(DepthBias, AConstantBiasIsAWorldLengthUnderAPerspectiveMap) {
     const Scene scene = edge_under_a_sphere_light();
     const Rasterized maps = uniform_maps(scene, 2048);
     const glm::dmat4& m = maps.setup.maps[0].world_to_uvz;
-    ASSERT_GT(glm::length(glm::dvec3(m[0][3], m[1][3], m[2][3])), 0.0) << "a perspective map: w changes along the light";
+    ASSERT_GT(glm::length(glm::dvec3(m[0][3], m[1][3], m[2][3])), 0.0)
+        << "a perspective map: w changes along the light";
     const Light light = scene.light;
     for (double below : {0.05, 0.2, 1.0}) {
         const glm::dvec3 p(-0.5, 3.0 - below, 0.2);  // under the blocker at height 3
@@ -189,18 +191,29 @@ TEST(DepthBias, EachBiasRemovesTheAcneOfAGrazingLight) {
 TEST(Vsm, LightBleedingFallsWithTheReduction) {
     Scene scene;  // an 8 x 8 ground, seen from between it and the low caster
     scene.objects.push_back({.name = "ground", .shape = Shape::plane, .size = {8.0, 1.0, 8.0}, .casts = false});
-    scene.objects.push_back({.name = "low", .shape = Shape::plane, .position = {0.0, 0.5, 0.0},
-                             .size = {8.0, 1.0, 8.0}, .receives = false});  // shadows the whole ground
-    scene.objects.push_back({.name = "high", .shape = Shape::plane, .position = {-2.0, 6.0, 0.0},
-                             .size = {4.0, 1.0, 8.0}, .receives = false});  // x < 0, nearer the light
+    scene.objects.push_back({.name = "low",
+                             .shape = Shape::plane,
+                             .position = {0.0, 0.5, 0.0},
+                             .size = {8.0, 1.0, 8.0},
+                             .receives = false});  // shadows the whole ground
+    scene.objects.push_back({.name = "high",
+                             .shape = Shape::plane,
+                             .position = {-2.0, 6.0, 0.0},
+                             .size = {4.0, 1.0, 8.0},
+                             .receives = false});  // x < 0, nearer the light
     scene.light = {.direction = {0, -1, 0}, .angular_radius_deg = 0.5};
-    scene.camera = {.position = {0, 0.3, 0.001}, .target = {0, 0, 0}, .up = {0, 0, -1}, .fov_y_deg = 90, .aspect = 1,
-                    .near = 0.05, .far = 2};
+    scene.camera = {.position = {0, 0.3, 0.001},
+                    .target = {0, 0, 0},
+                    .up = {0, 0, -1},
+                    .fov_y_deg = 90,
+                    .aspect = 1,
+                    .near = 0.05,
+                    .far = 2};
     const MeasureContext context = prepare_measurement(scene, 160, 160, 16);
     const Method& uniform = method_or_throw("uniform");
     auto bleeding = [&](const char* reduction) {
-        const Settings settings =
-            resolve_settings("uniform", uniform.settings, {{"filter", "vsm"}, {"kernel_size", "9"}, {"bleed_reduction", reduction}});
+        const Settings settings = resolve_settings(
+            "uniform", uniform.settings, {{"filter", "vsm"}, {"kernel_size", "9"}, {"bleed_reduction", reduction}});
         return measure(context, uniform, settings, 512, -1.0).error.visibility.light_bleeding;
     };
     const double plain = bleeding("0"), reduced = bleeding("0.3"), strong = bleeding("0.7");

@@ -94,7 +94,8 @@ Verdicts verdicts(const Scene& scene, double scale) {
                 .error.verdicts);
     for (const auto& [name, set] : lookup_variants(scale)) {
         const Method& m = method_or_throw(name);
-        v.per_method.push_back(measure(context, m, resolve_settings(name, m.settings, set), kResolution, -1.0).error.verdicts);
+        v.per_method.push_back(
+            measure(context, m, resolve_settings(name, m.settings, set), kResolution, -1.0).error.verdicts);
     }
     return v;
 }
@@ -113,9 +114,9 @@ TEST_P(Invariance, MovedAndScaledSceneKeepsItsVerdicts) {
     EXPECT_LE(differing(expected.lit, got.lit), 5e-4) << "the reference lights other points";
     for (size_t k = 0; k < expected.per_method.size(); ++k)
         EXPECT_LE(differing(expected.per_method[k], got.per_method[k]), 5e-4)
-            << (k < all_methods().size() ? all_methods()[k].name
-                                         : "variant " + std::to_string(k - all_methods().size()) +
-                                               " (cascades, then the lookups)");
+            << (k < all_methods().size()
+                    ? all_methods()[k].name
+                    : "variant " + std::to_string(k - all_methods().size()) + " (cascades, then the lookups)");
 }
 
 std::string configuration_name(const ::testing::TestParamInfo<Invariance::ParamType>& info) {

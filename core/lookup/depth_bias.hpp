@@ -12,10 +12,10 @@
 namespace shadowlab {
 
 struct DepthBias {
-    double constant = 0.0;       // world units along the light
-    double slope_scale = 1.0;    // times slope_scaled_bias
-    double normal_offset = 0.0;  // texels: the lookup point moved off the surface along its normal by this
-                                 // many texel widths (Holbert 2011), which needs less depth bias at grazing light
+    double constant = 0.0;        // world units along the light
+    double slope_scale = 1.0;     // times slope_scaled_bias
+    double normal_offset = 0.0;   // texels: the lookup point moved off the surface along its normal by this
+                                  // many texel widths (Holbert 2011), which needs less depth bias at grazing light
     bool receiver_plane = false;  // each texel read compares with the receiver's plane at that texel's centre
                                   // (Isidoro 2006), not with the depth at the point: no acne within a plane
 };

@@ -19,7 +19,8 @@ glm::dvec4 moments_of(double depth, const ShadowFilter& filter) {
 // One pass of the separable box blur over a tile's texels, along x (axis 0) or y (axis 1), edges
 // clamped to the tile. Each window summed afresh, in double: a running sum (or prefix sums) of
 // EVSM's moments, which span e^0 to e^{2c}, would lose the small ones to the large.
-void blur_along(std::vector<glm::dvec4>& texels, int resolution, glm::ivec2 first, glm::ivec2 last, int axis, int side) {
+void blur_along(std::vector<glm::dvec4>& texels, int resolution, glm::ivec2 first, glm::ivec2 last, int axis,
+                int side) {
     const int before = side / 2, after = side - 1 - before;  // an even side reaches one texel further back
     const int length = last[axis] - first[axis] + 1, lines = last[1 - axis] - first[1 - axis] + 1;
     std::vector<glm::dvec4> line_texels(length);

@@ -17,9 +17,9 @@ struct ShadowReader::MapReceiver {
     glm::dvec3 light_direction;  // the way light travels there
     double texels;               // across the map's tile
     glm::dvec2 uv;
-    double depth;                // the point's depth, less the bias in depth units
-    glm::dvec2 plane_gradient;   // receiver plane: ∂d/∂(u, v); 0 when off
-    double texel_world;          // a texel's world width across the light there
+    double depth;               // the point's depth, less the bias in depth units
+    glm::dvec2 plane_gradient;  // receiver plane: ∂d/∂(u, v); 0 when off
+    double texel_world;         // a texel's world width across the light there
 };
 
 namespace {
@@ -62,11 +62,12 @@ ShadowReader::ShadowReader(const ShadowSetup& setup, const DepthMap& depth, cons
 std::vector<Note> ShadowReader::fallbacks(const LookupCount& count) const {
     std::vector<Note> notes;
     if (lookup_.filter.kind != FilterKind::pcss) return notes;
-    if (!light_.is_area()) notes.push_back({NoteKind::light_without_size, "set the light's radius or angular_radius_deg"});
+    if (!light_.is_area())
+        notes.push_back({NoteKind::light_without_size, "set the light's radius or angular_radius_deg"});
     if (count.searches_clamped > 0)
-        notes.push_back({NoteKind::search_clamped,
-                         std::to_string(count.searches_clamped) + " of " + std::to_string(count.lookups) +
-                             " lookups, at " + std::to_string(int(kMaxSearchTexels)) + " texels"});
+        notes.push_back({NoteKind::search_clamped, std::to_string(count.searches_clamped) + " of " +
+                                                       std::to_string(count.lookups) + " lookups, at " +
+                                                       std::to_string(int(kMaxSearchTexels)) + " texels"});
     return notes;
 }
 
@@ -92,14 +93,15 @@ std::optional<ShadowReader::MapReceiver> ShadowReader::under(int which, const Re
     if (!at) return std::nullopt;
     const double slope_scaled =
         bias.slope_scale > 0.0 ? bias.slope_scale * slope_scaled_bias(texel_world, glm::dot(r.normal, -l)) : 0.0;
-    return MapReceiver{.map = map,
-                       .position = p,
-                       .light_direction = l,
-                       .texels = texels,
-                       .uv = at->uv,
-                       .depth = biased_depth(map, p, l, bias.constant + finite_or(slope_scaled, 0.0)),
-                       .plane_gradient = bias.receiver_plane ? receiver_plane_gradient(map, p, r.normal) : glm::dvec2(0.0),
-                       .texel_world = texel_world};
+    return MapReceiver{
+        .map = map,
+        .position = p,
+        .light_direction = l,
+        .texels = texels,
+        .uv = at->uv,
+        .depth = biased_depth(map, p, l, bias.constant + finite_or(slope_scaled, 0.0)),
+        .plane_gradient = bias.receiver_plane ? receiver_plane_gradient(map, p, r.normal) : glm::dvec2(0.0),
+        .texel_world = texel_world};
 }
 
 double ShadowReader::map_visibility(int which, const Receiver& r, LookupCount* count) const {
@@ -130,7 +132,8 @@ double ShadowReader::lit_share(const MapReceiver& m, const std::vector<KernelTap
     for (const KernelTap& tap : taps) {
         const glm::dvec2 uv = m.uv + rotated(tap.offset, c, s) * (radius_texels / m.texels);
         const glm::ivec2 texel = texel_of(m.map, uv, depth_.resolution);
-        const double receiver = m.depth + glm::dot(m.plane_gradient, texel_centre_uv(m.map, texel, depth_.resolution) - m.uv);
+        const double receiver =
+            m.depth + glm::dot(m.plane_gradient, texel_centre_uv(m.map, texel, depth_.resolution) - m.uv);
         if (receiver <= depth_.at(texel.x, texel.y)) lit += tap.weight;
     }
     if (count) count->taps += taps.size();
@@ -150,7 +153,8 @@ double ShadowReader::soft_shadow(const MapReceiver& m, const Receiver& r, Lookup
     double blocker_depth = 0.0;
     int blockers = 0;
     for (const KernelTap& tap : taps_) {
-        const glm::ivec2 texel = texel_of(m.map, m.uv + rotated(tap.offset, c, s) * (search / m.texels), depth_.resolution);
+        const glm::ivec2 texel =
+            texel_of(m.map, m.uv + rotated(tap.offset, c, s) * (search / m.texels), depth_.resolution);
         const double stored = depth_.at(texel.x, texel.y);
         if (stored < m.depth) blocker_depth += stored, ++blockers;
     }

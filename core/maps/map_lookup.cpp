@@ -197,7 +197,7 @@ double depth_slope(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& 
     const glm::dvec4 h = m * glm::dvec4(p, 1.0);
     const double a = glm::dot(glm::dvec3(m[0][2], m[1][2], m[2][2]), l);  // d_pre's slope along l
     const double c = glm::dot(glm::dvec3(m[0][3], m[1][3], m[2][3]), l);  // w's slope along l
-    return (a * h.w - h.z * c) / (h.w * h.w);                              // the quotient rule on d_pre / w
+    return (a * h.w - h.z * c) / (h.w * h.w);                             // the quotient rule on d_pre / w
 }
 
 double distance_back_to_depth(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p, double depth) {

@@ -56,12 +56,11 @@ std::vector<double> default_bias_values(const MeasureContext& context, const std
 
 BiasCurve sweep_bias(const MeasureContext& context, const Method& method,
                      const std::map<std::string, std::string>& overrides, int resolution,
-                     const std::string& bias_setting, const std::vector<double>& values,
-                     const BiasProgress& progress) {
+                     const std::string& bias_setting, const std::vector<double>& values, const BiasProgress& progress) {
     if (!method.makes_maps()) throw std::invalid_argument(method.name + " has no map and so no depth bias");
     if (values.empty()) throw std::invalid_argument("a bias sweep needs at least one value");
-    BiasCurve curve{.method = method.name, .setting = bias_setting,
-                    .settings = bias_sweep_settings(overrides, bias_setting)};
+    BiasCurve curve{
+        .method = method.name, .setting = bias_setting, .settings = bias_sweep_settings(overrides, bias_setting)};
     for (double value : values) {
         std::map<std::string, std::string> settings = curve.settings;
         settings[bias_setting] = significant(value, kFullDigits);

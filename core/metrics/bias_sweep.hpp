@@ -16,7 +16,7 @@ namespace shadowlab {
 inline const std::vector<std::string> kBiasSettings{"bias_slope", "bias_normal", "bias_constant"};
 
 struct BiasPoint {
-    double value = 0.0;  // of the swept setting, in its own unit
+    double value = 0.0;                                                 // of the swept setting, in its own unit
     double false_shadow = 0.0, false_light = 0.0, misclassified = 0.0;  // shares of receiver pixels
     std::vector<Note> fallbacks;
 };
@@ -49,8 +49,7 @@ std::map<std::string, std::string> bias_sweep_settings(const std::map<std::strin
 //                  light), up to ~114 widths at a 0.5° sun, so the ladder brackets it at any
 //                  resolution. (The measured depth_step is a 24-bit depth step, not a texel's
 //                  width: it sizes quantization, 2^-24 of the depth range, far below any acne.)
-std::vector<double> default_bias_values(const MeasureContext& context, const std::string& bias_setting,
-                                        int resolution);
+std::vector<double> default_bias_values(const MeasureContext& context, const std::string& bias_setting, int resolution);
 
 // `method` (a map method) measured at `resolution` with bias_sweep_settings(overrides, bias_setting)
 // and `bias_setting` at each of `values`: per value its false shadow, false light, misclassified

@@ -179,7 +179,8 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
             if (const double step = world_per_depth_unit(map, along_light(scene.light, p), p) / kDepthBufferSteps;
                 std::isfinite(step))
                 depth_steps.push_back(step);
-            const PixelAliasing a = pixel_aliasing(scene, ref, map, tile_resolution(map, reader.depth().resolution), x, y);
+            const PixelAliasing a =
+                pixel_aliasing(scene, ref, map, tile_resolution(map, reader.depth().resolution), x, y);
             if (a.m > 0.0) {
                 e.m_image[i] = float(a.m);
                 ms.push_back(a.m);

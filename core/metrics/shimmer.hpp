@@ -15,7 +15,7 @@ namespace shadowlab {
 // verdict for it.
 struct ShimmerSample {
     glm::dvec3 position;
-    glm::dvec3 normal;    // unit, the side the camera sees
+    glm::dvec3 normal;  // unit, the side the camera sees
     bool lit = false;
 };
 

@@ -25,9 +25,9 @@ struct VisibilityError {
     // images share the edges' length, so the ratio of penumbra pixels is the ratio of widths (1:
     // exact; 0: hard edges). None where the reference has no penumbra.
     std::optional<double> penumbra_width_ratio;
-    double light_bleeding = 0.0;  // share of the fully shadowed reference pixels lit above kBleedingThreshold
-    std::vector<float> image;          // the method's visibility per pixel; -1 where not judged
-    std::vector<float> signed_error;   // method − reference per judged pixel; 0 elsewhere
+    double light_bleeding = 0.0;      // share of the fully shadowed reference pixels lit above kBleedingThreshold
+    std::vector<float> image;         // the method's visibility per pixel; -1 where not judged
+    std::vector<float> signed_error;  // method − reference per judged pixel; 0 elsewhere
 };
 
 // The reference's visibility at pixel i: the soft share where traced, else lit as 0 or 1.

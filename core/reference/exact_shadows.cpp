@@ -104,9 +104,14 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
     const CameraRays rays(camera, width, height);
 
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
-    ReferenceImage image{width, height, std::vector<glm::dvec3>(pixels), std::vector<int>(pixels, -1),
-                         std::vector<uint8_t>(pixels, 0), std::vector<uint8_t>(pixels, 0),
-                         std::vector<float>(pixels, 0.0f), std::vector<glm::dvec3>(pixels)};
+    ReferenceImage image{width,
+                         height,
+                         std::vector<glm::dvec3>(pixels),
+                         std::vector<int>(pixels, -1),
+                         std::vector<uint8_t>(pixels, 0),
+                         std::vector<uint8_t>(pixels, 0),
+                         std::vector<float>(pixels, 0.0f),
+                         std::vector<glm::dvec3>(pixels)};
     if (shadow_rays == ShadowRays::area) {
         image.visibility.assign(pixels, 0.0f);
         image.light_samples = int(stratified_disc(samples, 0).size());

@@ -113,6 +113,8 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) { return shadowlab::testing::run_qt_suite<ControlsPanelTest>(argc, argv, "ShadowLabControlsTests"); }
+int main(int argc, char** argv) {
+    return shadowlab::testing::run_qt_suite<ControlsPanelTest>(argc, argv, "ShadowLabControlsTests");
+}
 
 #include "controls_panel_test.moc"

@@ -474,6 +474,8 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) { return shadowlab::testing::run_qt_suite<MainWindowTest>(argc, argv, "ShadowLabTests"); }
+int main(int argc, char** argv) {
+    return shadowlab::testing::run_qt_suite<MainWindowTest>(argc, argv, "ShadowLabTests");
+}
 
 #include "main_window_test.moc"

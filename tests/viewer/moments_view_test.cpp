@@ -27,10 +27,9 @@ float depth_span(const DepthMap& depth, int x, int y) {
 }
 
 TEST(MomentsView, TheDeviationIsBrightOnlyWhereTheBlurMixesDepths) {
-    const Inspection in = inspect_scene(testing::floating_box(kWidth, kHeight),
-                                        {.method = "focused",
-                                         .settings = {{"filter", "vsm"}, {"kernel_size", "3"}},
-                                         .resolution = kResolution});
+    const Inspection in = inspect_scene(
+        testing::floating_box(kWidth, kHeight),
+        {.method = "focused", .settings = {{"filter", "vsm"}, {"kernel_size", "3"}}, .resolution = kResolution});
     ViewOptions options;
     options.texture = TextureShown::moment_deviation;
     const RgbImage image = render_view(in, ViewKind::shadow_map, options, kWidth, kHeight);

@@ -24,8 +24,8 @@ Inspection soft_pcf_inspection(double angular_radius_deg, const std::string& fil
 
 struct Shares {
     size_t large = 0, large_with_its_sign = 0;    // |error| > 0.3
-    size_t exact = 0, exact_white = 0;             // |error| < 0.02
-    size_t coloured = 0, coloured_and_large = 0;   // red and blue channels apart by more than 30
+    size_t exact = 0, exact_white = 0;            // |error| < 0.02
+    size_t coloured = 0, coloured_and_large = 0;  // red and blue channels apart by more than 30
     size_t unjudged = 0, unjudged_grey = 0;
 };
 

@@ -54,7 +54,7 @@ private:
 
     QComboBox* method_;
     QWidget* settings_box_;
-    QWidget* settings_content_ = nullptr;  // the method's settings, rebuilt per method
+    QWidget* settings_content_ = nullptr;   // the method's settings, rebuilt per method
     QFormLayout* settings_form_ = nullptr;  // its own, then under the Filter and Depth bias headers
     QLabel* filter_header_ = nullptr;       // the Filter group's first row; none for a geometric technique
     std::vector<std::pair<QLabel*, QWidget*>> filter_rows_;  // the Filter group's, shown or not

@@ -73,10 +73,11 @@ QString PlotPanel::work(const std::string& method) const {
         case Kind::shimmer:
             return QString("plot: %1 along %2 frames of a sideways camera path").arg(name).arg(kShimmerFrames);
         case Kind::acne_against_bias:
-            return QString("plot: measuring %1 at 0 and 1/16 to 32 times the slope-scaled bias against the exact "
-                           "reference").arg(name);
-        case Kind::error_against_resolution:
-            break;
+            return QString(
+                       "plot: measuring %1 at 0 and 1/16 to 32 times the slope-scaled bias against the exact "
+                       "reference")
+                .arg(name);
+        case Kind::error_against_resolution: break;
     }
     return QString("plot: measuring %1 at 256² to 2048² against the exact reference").arg(name);
 }

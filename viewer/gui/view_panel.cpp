@@ -55,15 +55,17 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     error_->addItem("Verdicts", static_cast<int>(ErrorShown::verdicts));
     error_->addItem("Signed visibility", static_cast<int>(ErrorShown::signed_visibility));
     error_->setObjectName("errorChooser");
-    error_->setToolTip("each pixel's verdict (false shadow, false light, over Lloyd's m), or its visibility error, "
-                       "method − reference (blue too dark, red too light); automatic: signed where shadows are soft "
-                       "(a light with a size, or a filter other than hard)");
+    error_->setToolTip(
+        "each pixel's verdict (false shadow, false light, over Lloyd's m), or its visibility error, "
+        "method − reference (blue too dark, red too light); automatic: signed where shadows are soft "
+        "(a light with a size, or a filter other than hard)");
     texture_->addItem("Depth", static_cast<int>(TextureShown::depth));
     texture_->addItem("Moments: mean", static_cast<int>(TextureShown::moment_mean));
     texture_->addItem("Moments: deviation", static_cast<int>(TextureShown::moment_deviation));
     texture_->setObjectName("textureChooser");
-    texture_->setToolTip("the stored depth, or what a vsm or evsm filter reads: its blurred moments' mean, or their "
-                         "standard deviation √(m₂ − m₁²), non-zero where the blur mixes depths");
+    texture_->setToolTip(
+        "the stored depth, or what a vsm or evsm filter reads: its blurred moments' mean, or their "
+        "standard deviation √(m₂ − m₁²), non-zero where the blur mixes depths");
     aliasing_->addItem("m", static_cast<int>(AliasingShown::total));
     aliasing_->addItem("m: perspective factor", static_cast<int>(AliasingShown::perspective));
     aliasing_->addItem("m: projection factor", static_cast<int>(AliasingShown::projection));

@@ -13,8 +13,8 @@ struct ChartSeries {
     bool line = true;                 // points joined by a line (else points only)
     std::vector<bool> marked;         // optional: per point, also drawn with a cross (e.g. fallbacks)
     std::array<unsigned char, 3> color{0, 0, 0};  // RGB; {0, 0, 0} picks from a palette by series index
-    bool dashed = false;     // the line drawn dashed (a second quantity of the same subject, same colour)
-    bool in_legend = true;   // false: no legend entry (a mark that annotates another series)
+    bool dashed = false;    // the line drawn dashed (a second quantity of the same subject, same colour)
+    bool in_legend = true;  // false: no legend entry (a mark that annotates another series)
 };
 
 struct ChartSpec {

@@ -156,7 +156,8 @@ bool set_overlay_uniforms(vtkShaderProgram* program, MapOverlay overlay, const s
 // shaders hold them: (offset, weight).
 std::vector<glm::vec3> packed_taps(const ShadowFilter& f) {
     std::vector<glm::vec3> packed;
-    for (const KernelTap& tap : filter_taps(f)) packed.emplace_back(glm::vec2(tap.offset), static_cast<float>(tap.weight));
+    for (const KernelTap& tap : filter_taps(f))
+        packed.emplace_back(glm::vec2(tap.offset), static_cast<float>(tap.weight));
     return packed;
 }
 

@@ -19,7 +19,7 @@ namespace shadowlab {
 namespace {
 
 constexpr int kBarWidth = 300, kBarHeight = 10, kBarSteps = 96, kBarLeft = 8;
-constexpr int kBarTop = 82;        // below the legend's two lines and the side labels' two
+constexpr int kBarTop = 82;         // below the legend's two lines and the side labels' two
 constexpr int kTitleBaseline = 16;  // the legend's first row
 
 void hang_from_top_left(vtkCoordinate* position, vtkCoordinate* corner, double dx, double dy) {

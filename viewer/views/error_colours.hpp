@@ -21,9 +21,9 @@ inline constexpr Colour kAgreeShadowed{52, 52, 60};
 // The signed visibility error, method − reference, over [−1, 1], the whole range a visibility in
 // [0, 1] allows, so that a colour means the same error in every picture. The ends of ColorBrewer's
 // RdBu: a colour-blind reader still tells them apart by lightness.
-inline constexpr Colour kTooDark{33, 102, 172};    // −1: the method shadows what the reference lights
-inline constexpr Colour kExact{247, 247, 247};     //  0
-inline constexpr Colour kTooLight{178, 24, 43};    // +1: the method lights what the reference shadows
+inline constexpr Colour kTooDark{33, 102, 172};  // −1: the method shadows what the reference lights
+inline constexpr Colour kExact{247, 247, 247};   //  0
+inline constexpr Colour kTooLight{178, 24, 43};  // +1: the method lights what the reference shadows
 
 inline Colour signed_error_colour(double error) {
     const double t = std::clamp(std::abs(error), 0.0, 1.0);

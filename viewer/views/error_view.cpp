@@ -182,8 +182,8 @@ ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const V
     }
     add_aliasing_bar(renderer, aliasing.name);
     char caption[160];
-    std::snprintf(caption, sizeof caption, "; %s max %.2f, p95 %.2f", aliasing.name,
-                  aliasing.stats.max, aliasing.stats.p95);
+    std::snprintf(caption, sizeof caption, "; %s max %.2f, p95 %.2f", aliasing.name, aliasing.stats.max,
+                  aliasing.stats.p95);
     add_caption(renderer, "Error — " + in.name() + " " + std::to_string(in.resolution) + "²: " + shares(e) + caption);
     return {};
 }

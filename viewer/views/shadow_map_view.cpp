@@ -367,8 +367,8 @@ PaintedTexture painted_depth(const Inspection& in, std::string caption) {
 PaintedTexture painted_moments(vtkRenderer* renderer, const Inspection& in, TextureShown which) {
     const ShadowFilter& filter = in.lookup.filter;
     const bool exponential = filter.kind == FilterKind::evsm;
-    const std::string blur = " over a " + std::to_string(filter.kernel_size) + "×" +
-                             std::to_string(filter.kernel_size) + " box";
+    const std::string blur =
+        " over a " + std::to_string(filter.kernel_size) + "×" + std::to_string(filter.kernel_size) + " box";
     const float empty = which == TextureShown::moment_mean ? 1.0f : std::numeric_limits<float>::quiet_NaN();
     ShownTexture shown = shown_texture(in, moment_texture(in, which), empty);
     if (which == TextureShown::moment_mean) {
@@ -452,9 +452,8 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
     const char* frustum_words = painted.on_heat_ramp ? "camera frustum in blue; " : "camera frustum in yellow; ";
     const bool linear_maps = !std::all_of(in.setup.maps.begin(), in.setup.maps.end(),
                                           [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
-    add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + words +
-                              maps + cross + " (" +
-                              (linear_maps ? frustum_words : "") +
+    add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + words + maps + cross +
+                              " (" + (linear_maps ? frustum_words : "") +
                               (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
                               "texel grid when zoomed in)" + sagittas);
     return report;

@@ -139,8 +139,8 @@ TEST(GpuFilterParity, EachFilterAndBiasReadsAsTheCpuLookup) {
             EXPECT_LT(p.mean_difference, 0.02) << name;
             EXPECT_LT(p.penumbra_mean_difference, 0.02) << name << ", in the penumbrae";
             std::cout << name << ": mean |GPU - CPU| visibility " << p.mean_difference << " over " << p.compared
-                      << " pixels, " << p.penumbra_mean_difference << " over the " << p.penumbra
-                      << " in a penumbra (" << p.shadowed << " less than half lit)\n";
+                      << " pixels, " << p.penumbra_mean_difference << " over the " << p.penumbra << " in a penumbra ("
+                      << p.shadowed << " less than half lit)\n";
         }
     }
 }
