@@ -63,7 +63,9 @@ TEST(BiasSweep, TheBestPointIsTheLeastMisclassified) {
     const BiasPoint& best = curve.points.at(curve.best);
     for (const BiasPoint& p : curve.points) {
         EXPECT_LE(best.misclassified, p.misclassified) << p.value;
-        if (p.misclassified == best.misclassified) EXPECT_LE(best.value, p.value) << "ties go to the smaller bias";
+        if (p.misclassified == best.misclassified) {
+            EXPECT_LE(best.value, p.value) << "ties go to the smaller bias";
+        }
     }
     EXPECT_LT(best.misclassified, curve.points.front().misclassified) << "some bias beats none";
 }
@@ -91,6 +93,7 @@ TEST(BiasSweep, TheConstantLadderScalesWithATexelsWidth) {
 TEST(BiasSweep, AGeometricTechniqueHasNoBiasToSweep) {
     const MeasureContext context = tilted_light_on_box(32, 18);
     for (const Method& method : all_methods())
-        if (!method.makes_maps())
+        if (!method.makes_maps()) {
             EXPECT_THROW(sweep_bias(context, method, {}, kResolution, "bias_slope", {1.0}), std::invalid_argument);
+        }
 }

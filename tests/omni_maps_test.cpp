@@ -43,8 +43,9 @@ TEST(OmniMaps, EveryVisibleReceiverLandsInItsMap) {
                 const glm::dvec3 uvz = world_to_uvz(setup.maps[map], seen.position[i]);
                 ASSERT_TRUE(in_unit_cube(uvz, 1e-9))
                     << method << " on " << file << " map " << map << ": " << uvz.x << " " << uvz.y << " " << uvz.z;
-                if (setup.maps[map].projection == Projection::paraboloid)
+                if (setup.maps[map].projection == Projection::paraboloid) {
                     ASSERT_LE(glm::length(glm::dvec2(uvz) - 0.5), 0.5 + 1e-9) << "on the disc";
+                }
             }
         }
     }

@@ -78,5 +78,7 @@ TEST(SoftReference, APointLightCastsHardShadows) {
     scene.light.radius = 0.0;
     const ReferenceImage soft = soft_reference(scene, tessellate(scene), 100, 4, 16);
     for (size_t i = 0; i < soft.visible.size(); ++i)
-        if (soft.visible[i]) EXPECT_EQ(soft.visibility[i], soft.lit[i] ? 1.0f : 0.0f) << i;
+        if (soft.visible[i]) {
+            EXPECT_EQ(soft.visibility[i], soft.lit[i] ? 1.0f : 0.0f) << i;
+        }
 }
