@@ -1,6 +1,7 @@
-// What one change in the window costs before drawing: inspect_scene on the default scene (the
-// method with its trace, the tessellation and the CPU depth map; for a technique its verdicts on
-// a 640-wide camera image).
+// What one change in the window costs before drawing, on the default scene at 2048²: inspect_scene
+// (the method with its trace, the tessellation; for a technique its verdicts on a 640-wide camera
+// image), for every method of the registry; and for the map methods the same with the CPU depth map
+// the Shadow map, Texels and Error views read (rasterized on every core, only when read).
 #include <benchmark/benchmark.h>
 
 #include "model/inspection.hpp"
@@ -10,16 +11,34 @@ using namespace shadowlab;
 
 namespace {
 
-void inspection(benchmark::State& state, const std::string& scene_file, const std::string& method) {
-    const Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/" + scene_file);
-    InspectionRequest request;
-    request.method = method;
-    request.resolution = static_cast<int>(state.range(0));
-    for (auto _ : state) benchmark::DoNotOptimize(inspect_scene(scene, request));
+const Scene& default_scene() {
+    static const Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/default.json");
+    return scene;
 }
 
-}  // namespace
+void inspection(benchmark::State& state, const std::string& method, bool with_depth_map) {
+    InspectionRequest request;
+    request.method = method;
+    request.resolution = 2048;
+    for (auto _ : state) {
+        const Inspection in = inspect_scene(default_scene(), request);
+        if (with_depth_map) benchmark::DoNotOptimize(in.depth().depth.data());
+        benchmark::DoNotOptimize(in);
+    }
+}
 
-BENCHMARK_CAPTURE(inspection, default_focused, "default.json", "focused")->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(inspection, default_lispsm, "default.json", "lispsm")->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(inspection, volumes_zfail, "volumes.json", "volumes")->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+// One benchmark per method (and per map method one with its depth map), named after it.
+const bool kRegistered = [] {
+    for (const Method& m : all_methods()) {
+        benchmark::RegisterBenchmark(("inspection/" + m.name).c_str(), inspection, m.name, false)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        if (m.makes_maps())
+            benchmark::RegisterBenchmark(("inspection_with_depth_map/" + m.name).c_str(), inspection, m.name, true)
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+    }
+    return true;
+}();
+
+}  // namespace

@@ -3,13 +3,16 @@
 #include "raster/depth_map.hpp"
 
 #include "geometry/homogeneous_clip.hpp"
+#include "math/parallel_rows.hpp"
 #include "maps/map_lookup.hpp"
 #include "raster/paraboloid_edges.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <thread>
 #include <utility>
+#include <vector>
 
 namespace shadowlab {
 namespace {
@@ -98,9 +101,11 @@ Polygon on_hemisphere(const ShadowMap& map, const std::array<glm::dvec3, 3>& wor
     return clip_where(projected, [&](std::size_t i) { return side[i]; });
 }
 
-void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object, const ShadowMap& map,
-              DepthMap& out) {
-    const TexelRange tile = tile_texels(map, out.resolution);
+// The map's caster triangles after clipping and division, as fans of screen vertices.
+std::vector<std::array<ScreenVertex, 3>> screen_triangles(const WorldTriangles& triangles,
+                                                          const std::vector<bool>& casts_per_object,
+                                                          const ShadowMap& map, int resolution) {
+    std::vector<std::array<ScreenVertex, 3>> out;
     for (std::size_t i = 0; i < triangles.triangles.size(); ++i) {
         if (!casts_per_object.at(triangles.object[i])) continue;
         std::array<glm::dvec3, 3> world;
@@ -113,10 +118,28 @@ void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_pe
         if (map.projection == Projection::paraboloid) polygon = on_hemisphere(map, world, polygon);
         polygon = clip_to_map(std::move(polygon));
         std::vector<ScreenVertex> screen;
-        for (const glm::dvec4& h : polygon) screen.push_back(to_screen(h, map, out.resolution));
-        for (std::size_t k = 1; k + 1 < screen.size(); ++k)
-            draw_triangle(screen[0], screen[k], screen[k + 1], tile, out);
+        for (const glm::dvec4& h : polygon) screen.push_back(to_screen(h, map, resolution));
+        for (std::size_t k = 1; k + 1 < screen.size(); ++k) out.push_back({screen[0], screen[k], screen[k + 1]});
     }
+    return out;
+}
+
+// The triangles filled on every core, each thread a band of the tile's rows: every texel is written
+// by one thread, and its least depth does not depend on the order, so the result is the same.
+void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object, const ShadowMap& map,
+              DepthMap& out) {
+    const TexelRange tile = tile_texels(map, out.resolution);
+    const std::vector<std::array<ScreenVertex, 3>> screen = screen_triangles(triangles, casts_per_object, map, out.resolution);
+    const int rows = tile.last.y - tile.first.y + 1, bands = std::max(1, std::min(row_threads(), rows));
+    std::vector<std::thread> workers;
+    for (int b = 0; b < bands; ++b)
+        workers.emplace_back([&, b] {
+            TexelRange band = tile;
+            band.first.y = tile.first.y + rows * b / bands;
+            band.last.y = tile.first.y + rows * (b + 1) / bands - 1;
+            for (const std::array<ScreenVertex, 3>& t : screen) draw_triangle(t[0], t[1], t[2], band, out);
+        });
+    for (std::thread& w : workers) w.join();
 }
 
 }  // namespace

@@ -142,10 +142,10 @@ TEST_F(Extension, TwoMapsInAnAtlasAreRasterizedLookedUpAndDrawn) {
     size_t differ = 0, drawn = 0;
     for (int y = 0; y < 1024; ++y)
         for (int x = 0; x < 1024; ++x) {
-            differ += tiles.depth.at(x, y) != whole.depth.at(x, y);
-            differ += tiles.depth.at(x + 1024, y + 1024) != whole.depth.at(x, y);
-            differ += tiles.depth.at(x + 1024, y) != 1.0f || tiles.depth.at(x, y + 1024) != 1.0f;  // unused tiles
-            drawn += whole.depth.at(x, y) < 1.0f;
+            differ += tiles.depth().at(x, y) != whole.depth().at(x, y);
+            differ += tiles.depth().at(x + 1024, y + 1024) != whole.depth().at(x, y);
+            differ += tiles.depth().at(x + 1024, y) != 1.0f || tiles.depth().at(x, y + 1024) != 1.0f;  // unused tiles
+            drawn += whole.depth().at(x, y) < 1.0f;
         }
     EXPECT_EQ(differ, 0u);
     EXPECT_GT(drawn, 1000u);

@@ -39,7 +39,7 @@ TEST(MomentsView, TheDeviationIsBrightOnlyWhereTheBlurMixesDepths) {
             const int y = kResolution - 1 - row;  // texel rows count up (v); the picture's from the top
             const unsigned char* c = image.at(kImageLeft + kPixelsPerTexel * x, kPixelsPerTexel * row);
             if (int(c[2]) > int(c[0]) + 60) continue;  // the camera frustum, drawn in blue over the texels
-            const float span = depth_span(in.depth, x, y);
+            const float span = depth_span(in.depth(), x, y);
             const int brightest = std::max({c[0], c[1], c[2]});
             if (span < 0.005f) ++flat, flat_dark += brightest < 25;
             if (span > 0.1f) ++edges, edges_bright += brightest > 100;

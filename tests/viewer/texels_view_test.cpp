@@ -115,8 +115,7 @@ Inspection two_tile_atlas(const Scene& scene, int resolution) {
                           .eye = camera.position,
                           .view_axis = camera.view_direction(),
                           .split_depths = {0.0, glm::length(camera.target - camera.position), camera.far}};
-    in.depth = rasterize_depth(in.triangles, in.casters, in.setup, in.resolution);
-    return in;
+    return in;  // its depth map is rasterized from this setup when first read
 }
 
 }  // namespace

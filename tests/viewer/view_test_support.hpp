@@ -106,7 +106,7 @@ inline Agreement gpu_against_cpu_lookup(const Inspection& in, int width, int hei
     options.lit_mask = true;
     const RgbImage gpu = render_view(in, ViewKind::camera, options, width, height);
     const ReferenceImage& ref = in.reference(width, height);
-    const ShadowReader reader(in.setup, in.depth, in.scene.light, in.lookup);
+    const ShadowReader reader(in.setup, in.depth(), in.scene.light, in.lookup);
     std::vector<int8_t> cpu(ref.visible.size(), -1);
     for (size_t i = 0; i < cpu.size(); ++i)
         if (ref.visible[i])

@@ -2,11 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "limits.hpp"
 #include "reference/visible_depths.hpp"
 
 namespace shadowlab {
+
+struct Inspection::LazyDepth {
+    std::once_flag once;
+    DepthMap depth;
+};
+
+const DepthMap& Inspection::depth() const {
+    if (!depth_) depth_ = std::make_shared<LazyDepth>();
+    std::call_once(depth_->once, [&] { depth_->depth = rasterize_depth(triangles, casters, setup, resolution); });
+    return depth_->depth;
+}
 
 struct Inspection::Judged {
     int width = 0, height = 0;
@@ -32,7 +44,7 @@ const ShadowError& Inspection::error(int width, int height) const {
     Judged& j = judged(width, height);
     if (j.error) return *j.error;
     if (has_map()) {
-        const ShadowReader reader(setup, depth, scene.light, lookup);
+        const ShadowReader reader(setup, depth(), scene.light, lookup);
         j.error = measure_shadow_error(scene, j.reference, reader, receiver_visibility(scene, j.reference, reader));
     } else {
         j.error = judge_shadows(scene, j.reference, geometry->shadowed);
@@ -61,7 +73,6 @@ Inspection inspect_scene(const Scene& scene, const InspectionRequest& request) {
         if (method.wants_visible_depths(in.settings))
             in.inputs.visible_depths = trace_receiver_depth_range(scene, in.triangles, in.image_width, in.image_height);
         in.setup = method.compute_maps(in.inputs, in.settings, &in.trace);
-        in.depth = rasterize_depth(in.triangles, in.casters, in.setup, in.resolution);
         in.lookup = lookup_from(in.settings, in.bias);
     } else {
         in.geometry = method.compute_geometry(scene, in.triangles, in.reference(in.image_width, in.image_height),

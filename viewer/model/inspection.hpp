@@ -40,7 +40,6 @@ struct Inspection {
     WorldTriangles triangles;
     std::vector<bool> casters;  // per object
     ShadowSetup setup;          // maps: the method's result
-    DepthMap depth;             // maps: every map of `setup` rasterized into its tile
     ShadowLookup lookup;        // maps: the filter and bias the settings ask for (a constant `bias` replaces the bias)
     std::optional<GeometryResult> geometry;  // geometric techniques: the method's result
 
@@ -49,6 +48,11 @@ struct Inspection {
     const std::string& title() const { return method->title; }
     // What the user is told: a map method's fallbacks, or a technique's limits.
     const std::vector<Note>& notes() const { return has_map() ? setup.fallbacks : geometry->limits; }
+
+    // Maps: every map of `setup` rasterized into its tile (on every core), on the first call: the
+    // Camera view draws its own on the GPU, so a change pays for the CPU's only when a view (Shadow
+    // map, Texels, Error) or a measure reads it. Made from `setup` as it is at that first call.
+    const DepthMap& depth() const;
 
     // The exact reference of a width x height camera image (soft for an area light: light_reference),
     // traced on the first call for that size;
@@ -59,6 +63,8 @@ struct Inspection {
     const ShadowError& error(int width, int height) const;
 
 private:
+    struct LazyDepth;  // the depth map, made once
+    mutable std::shared_ptr<LazyDepth> depth_;
     struct Judged;  // the reference and error of one image size
     Judged& judged(int width, int height) const;
     mutable std::shared_ptr<std::deque<Judged>> judged_;  // most recently asked for first

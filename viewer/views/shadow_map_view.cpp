@@ -85,7 +85,7 @@ float largest_value(const DepthMap& texture) {
 // its mean as ln(μ) / c⁺ and its deviation to first order, σ / (c⁺ μ) (d(e^{c⁺d}) = c⁺ e^{c⁺d} dd).
 DepthMap moment_texture(const Inspection& in, TextureShown shown) {
     const ShadowFilter& filter = in.lookup.filter;
-    const MomentMap moments = blurred_moments(in.depth, in.setup, filter);
+    const MomentMap moments = blurred_moments(in.depth(), in.setup, filter);
     const bool exponential = filter.kind == FilterKind::evsm;
     DepthMap texture{.resolution = moments.resolution, .depth = std::vector<float>(moments.moments.size())};
     for (size_t i = 0; i < moments.moments.size(); ++i) {
@@ -358,7 +358,7 @@ const glm::dvec3 kFrustumOnGrey{1.0, 0.85, 0.1}, kFrustumOnHeat{0.3, 0.8, 1.0};
 
 // The depth, as stored.
 PaintedTexture painted_depth(const Inspection& in, std::string caption) {
-    ShownTexture shown = shown_texture(in, in.depth, 1.0f);
+    ShownTexture shown = shown_texture(in, in.depth(), 1.0f);
     RgbImage image = depth_to_grey(shown.texture);
     return {std::move(shown), std::move(image), std::move(caption)};
 }

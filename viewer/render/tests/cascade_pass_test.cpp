@@ -82,8 +82,8 @@ TEST_F(TwoMapsByViewDepth, GpuBlendsAsTheCpuDoes) {
         ShadowSetup own_map_only = in.setup;
         own_map_only.selection.blend_band = 0.0;
         const ReferenceImage& ref = in.reference(kWidth, kHeight);
-        const ShadowReader blended(in.setup, in.depth, in.scene.light, in.lookup);
-        const ShadowReader own_map(own_map_only, in.depth, in.scene.light, in.lookup);
+        const ShadowReader blended(in.setup, in.depth(), in.scene.light, in.lookup);
+        const ShadowReader own_map(own_map_only, in.depth(), in.scene.light, in.lookup);
         std::vector<int8_t> cpu(ref.visible.size(), -1), decided_by_band(ref.visible.size(), -1);
         for (size_t i = 0; i < cpu.size(); ++i) {
             if (!ref.visible[i]) continue;

@@ -77,7 +77,7 @@ struct Parity {
 
 Parity gpu_against_cpu_visibility(const Inspection& in, const ReferenceImage& ref) {
     const RgbImage gpu = gpu_visibility(in);
-    const ShadowReader reader(in.setup, in.depth, in.scene.light, in.lookup);
+    const ShadowReader reader(in.setup, in.depth(), in.scene.light, in.lookup);
     Parity parity;
     double sum = 0.0, penumbra_sum = 0.0;
     for (int y = 1; y < kHeight - 1; ++y)
