@@ -46,17 +46,28 @@ void parse_size(const std::string& text, int& width, int& height) {
         throw CLI::ValidationError("--size", "expected WxH, got '" + text + "'");
 }
 
+// Which of a scene file's cameras and lights the command takes (a glTF file may hold several).
+void add_scene_choice(CLI::App* command, shadowlab::SceneChoice& choice) {
+    command->add_option("--camera-index", choice.camera, "the scene file's camera to take, 0-based (glTF: cameras[N])")
+        ->capture_default_str();
+    command->add_option("--light-index", choice.light,
+                        "the scene file's light to take, 0-based (glTF: KHR_lights_punctual's lights[N])")
+        ->capture_default_str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::string method_help = shadowlab::method_names(" | ");
+    const std::string scene_help = "scene file: JSON, glTF (.gltf, .glb) or a mesh alone";
     CLI::App app{"ShadowLab: an inspector for shadow-map parameterizations"};
     app.require_subcommand(0, 1);
 
     shadowlab::InspectOptions inspect;
     std::vector<std::string> set_pairs;
     CLI::App* inspect_cmd = app.add_subcommand("inspect", "print a method's steps, matrices and fallbacks for a scene");
-    inspect_cmd->add_option("scene", inspect.scene_file, "scene file (JSON)")->required();
+    inspect_cmd->add_option("scene", inspect.scene_file, scene_help)->required();
+    add_scene_choice(inspect_cmd, inspect.scene_choice);
     inspect_cmd->add_option("--method,-m", inspect.method, method_help)->capture_default_str();
     inspect_cmd->add_option("--set", set_pairs, "a method setting, key=value (repeatable)");
     inspect_cmd->add_flag("--json", inspect.json, "print one JSON object instead of text");
@@ -65,7 +76,8 @@ int main(int argc, char** argv) {
     std::vector<std::string> measure_pairs;
     std::string size = "1280x720";
     CLI::App* measure_cmd = app.add_subcommand("measure", "a method's error against the exact reference, and its cost");
-    measure_cmd->add_option("scene", measure.scene_file, "scene file (JSON)")->required();
+    measure_cmd->add_option("scene", measure.scene_file, scene_help)->required();
+    add_scene_choice(measure_cmd, measure.scene_choice);
     measure_cmd->add_option("--method,-m", measure.method, method_help)->capture_default_str();
     measure_cmd->add_option("--resolution,-r", measure.resolution, "shadow map resolution (texels per side)")->capture_default_str();
     measure_cmd->add_option("--size", size, "camera image size WxH")->capture_default_str();
@@ -76,7 +88,8 @@ int main(int argc, char** argv) {
     shadowlab::BenchOptions bench;
     std::string bench_size = "640x360";
     CLI::App* bench_cmd = app.add_subcommand("bench", "every method at every resolution: a CSV and a plot of error against cost");
-    bench_cmd->add_option("scenes", bench.scene_files, "scene files (JSON)")->required();
+    bench_cmd->add_option("scenes", bench.scene_files, "scene files: JSON, glTF (.gltf, .glb) or meshes alone")->required();
+    add_scene_choice(bench_cmd, bench.scene_choice);
     bench_cmd->add_option("--methods", bench.methods, "methods, comma-separated (default: all)")->delimiter(',');
     bench_cmd->add_option("--resolutions", bench.resolutions, "map resolutions, comma-separated")->delimiter(',')->capture_default_str();
     bench_cmd->add_option("--size", bench_size, "camera image size WxH")->capture_default_str();
@@ -90,7 +103,8 @@ int main(int argc, char** argv) {
     CLI::App* sweep_cmd = app.add_subcommand("sweep",
                                              "light from perpendicular to parallel with the view, and far/near from 10 "
                                              "to 1e7; or, with --bias, a depth bias");
-    sweep_cmd->add_option("scene", sweep.scene_file, "scene file (JSON)")->required();
+    sweep_cmd->add_option("scene", sweep.scene_file, scene_help)->required();
+    add_scene_choice(sweep_cmd, sweep.scene_choice);
     sweep_cmd->add_option("--methods", sweep.methods, "methods, comma-separated (default: all)")->delimiter(',');
     sweep_cmd->add_option("--resolution,-r", sweep.resolution, "map resolution")->capture_default_str();
     sweep_cmd->add_option("--size", sweep_size, "camera image size WxH")->capture_default_str();
@@ -110,7 +124,8 @@ int main(int argc, char** argv) {
     std::vector<std::string> render_pairs;
     std::string render_size = "1280x720";
     CLI::App* render_cmd = app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
-    render_cmd->add_option("scene", render.scene_file, "scene file (JSON)")->required();
+    render_cmd->add_option("scene", render.scene_file, scene_help)->required();
+    add_scene_choice(render_cmd, render.scene_choice);
     render_cmd->add_option("--method,-m", render.method, method_help)->capture_default_str();
     render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | texels | error | stencil")->capture_default_str();
     render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
@@ -148,7 +163,8 @@ int main(int argc, char** argv) {
     std::string lesson_size = "640x400";
     CLI::App* lesson_cmd = app.add_subcommand(
         "lesson", "a course page: every step's formula, values and pictures as HTML and PNGs (needs X: xvfb-run)");
-    lesson_cmd->add_option("scene", lesson.scene_file, "scene file (JSON)")->required();
+    lesson_cmd->add_option("scene", lesson.scene_file, scene_help)->required();
+    add_scene_choice(lesson_cmd, lesson.scene_choice);
     lesson_cmd->add_option("--method,-m", lesson.method, method_help)->capture_default_str();
     lesson_cmd->add_option("--set", lesson_pairs, "a method setting, key=value (repeatable)");
     lesson_cmd->add_option("--resolution,-r", lesson.resolution, "shadow map resolution")->capture_default_str();
@@ -161,7 +177,8 @@ int main(int argc, char** argv) {
     std::string shimmer_size = "640x360";
     CLI::App* shimmer_cmd = app.add_subcommand(
         "shimmer", "the camera moved along a path: how often fixed points' shadow verdicts flip between frames");
-    shimmer_cmd->add_option("scene", shimmer.scene_file, "scene file (JSON)")->required();
+    shimmer_cmd->add_option("scene", shimmer.scene_file, scene_help)->required();
+    add_scene_choice(shimmer_cmd, shimmer.scene_choice);
     shimmer_cmd->add_option("--method,-m", shimmer.method, method_help)->capture_default_str();
     shimmer_cmd->add_option("--set", shimmer_pairs, "a method setting, key=value (repeatable)");
     shimmer_cmd->add_option("--path", shimmer.path, "translate (sideways) | rotate (on the spot) | dolly (forward)")

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_support.hpp"
+#include "gltf_support.hpp"
 #include "test_support.hpp"
 
 using shadowlab::testing::CliResult;
@@ -347,4 +348,85 @@ TEST(Cli, BenchPutsVolumesAndMapsInOneTable) {
     EXPECT_NE(csv[3].find(",volumes,0,"), std::string::npos) << csv[3];
     EXPECT_NE(csv[4].find(",planar,0,"), std::string::npos) << csv[4];
     EXPECT_TRUE(csv[1].size() > 3 && csv[1].substr(csv[1].size() - 3) == ",,,") << "a map has no polygons: " << csv[1];
+}
+
+// A glTF scene opens in the commands as it is: with its own camera (its aspect, 1.5, shapes the
+// measured image), what it lacks named on stderr, a broken file refused by name.
+TEST(Cli, InspectAndMeasureOpenAGltfSceneWithItsCamera) {
+    using shadowlab::testing::two_camera_scene;
+    using shadowlab::testing::write_test_file;
+    const std::string file = write_test_file("cli_two_cameras.gltf", two_camera_scene().dump());
+    const CliResult inspect = run_cli("inspect " + file + " --json");
+    ASSERT_EQ(inspect.exit_code, 0) << inspect.err;
+    EXPECT_FALSE(nlohmann::json::parse(inspect.out)["inputs"]["casters"].empty());
+    const CliResult measure = run_cli("measure " + file + " --resolution 256 --size 300x300 --json");
+    ASSERT_EQ(measure.exit_code, 0) << measure.err;
+    EXPECT_EQ(nlohmann::json::parse(measure.out)["image"], nlohmann::json({300, 200}));
+
+    nlohmann::json unlit = two_camera_scene();
+    unlit.erase("extensions");
+    for (nlohmann::json& node : unlit["nodes"]) node.erase("extensions");
+    const std::string unlit_file = write_test_file("cli_unlit.gltf", unlit.dump());
+    const CliResult defaulted = run_cli("inspect " + unlit_file);
+    EXPECT_EQ(defaulted.exit_code, 0) << defaulted.err;
+    EXPECT_NE(defaulted.err.find(unlit_file + ": no KHR_lights_punctual light"), std::string::npos) << defaulted.err;
+
+    const CliResult broken = run_cli("inspect " + write_test_file("cli_broken.gltf", R"({"asset":)"));
+    EXPECT_NE(broken.exit_code, 0);
+    EXPECT_NE(broken.err.find("cli_broken.gltf: malformed JSON"), std::string::npos) << broken.err;
+}
+
+// An engine's matrix from a file: the focused map as `inspect --json` prints it (rows of world_to_uvz),
+// written as an OpenGL engine's GLSL (clip x, y, z = 2 (u, v, d) - w, by columns), measures as the
+// focused map does; 15 numbers are refused on one line naming the file and the matrix.
+TEST(Cli, MeasureReadsAnEnginesMatricesFromAFile) {
+    const std::string scene = source_path("data/scenes/box_on_plane.json");
+    const CliResult inspected = run_cli("inspect " + scene + " --method focused --json");
+    ASSERT_EQ(inspected.exit_code, 0) << inspected.err;
+    const nlohmann::json uvz = nlohmann::json::parse(inspected.out)["maps"][0]["world_to_uvz"];
+    std::string columns;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            const double w = uvz[3][c], clip = r == 3 ? w : 2.0 * uvz[r][c].get<double>() - w;
+            char number[32];
+            std::snprintf(number, sizeof number, "%.17g", clip);
+            columns += (columns.empty() ? "" : ", ") + std::string(number);
+        }
+    const std::string file = ::testing::TempDir() + "cli_light_view_projection.glsl";
+    std::ofstream(file) << "const mat4 lightViewProjection = mat4(" << columns << ");\n";
+    auto measured = [&](const std::string& method) {
+        const CliResult r =
+            run_cli("measure " + scene + " --method " + method + " --resolution 512 --size 320x180 --json");
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return nlohmann::json::parse(r.out);
+    };
+    const nlohmann::json focused = measured("focused"), custom = measured("custom --set matrices=" + file);
+    EXPECT_EQ(custom["method"], "custom");
+    EXPECT_NEAR(custom["misclassified"].get<double>(), focused["misclassified"].get<double>(),
+                1.0 / focused["receiver_pixels"].get<double>());
+    for (const auto& note : custom["fallbacks"])
+        EXPECT_NE(note["kind"], shadowlab::to_string(shadowlab::NoteKind::missed_receivers)) << custom["fallbacks"];
+
+    const std::string bad = ::testing::TempDir() + "cli_fifteen_numbers.glsl";
+    std::ofstream(bad) << "mat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0)\n";
+    const CliResult r = run_cli("inspect " + scene + " --method custom --set matrices=" + bad);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find(bad + ": matrix 0 (line 1): expected 16 numbers, got 15"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+}
+
+// --camera-index and --light-index pick another of a glTF file's cameras and lights, by number.
+TEST(Cli, CameraAndLightIndexPickAmongAGltfFilesOwn) {
+    const std::string file =
+        shadowlab::testing::write_test_file("cli_choice.gltf", shadowlab::testing::two_camera_scene().dump());
+    const CliResult side =
+        run_cli("measure " + file + " --camera-index 1 --light-index 1 --resolution 256 --size 300x300 --json");
+    ASSERT_EQ(side.exit_code, 0) << side.err;
+    // The side camera has no aspectRatio: 16:9, said on stderr.
+    EXPECT_EQ(nlohmann::json::parse(side.out)["image"], nlohmann::json({300, std::lround(300 * 9.0 / 16.0)}));
+    EXPECT_NE(side.err.find("cameras[1].perspective has no aspectRatio"), std::string::npos) << side.err;
+    const CliResult beyond = run_cli("inspect " + file + " --camera-index 2");
+    EXPECT_NE(beyond.exit_code, 0);
+    EXPECT_NE(beyond.err.find("camera 2 asked for, but the file holds 2 cameras (0 … 1)"), std::string::npos)
+        << beyond.err;
 }

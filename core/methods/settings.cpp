@@ -42,6 +42,7 @@ std::variant<double, std::string> parse_value(const std::string& method, const S
                                               const std::string& text) {
     std::ostringstream problem;
     problem << "method " << method << ": setting " << spec.name << "=" << text << ": ";
+    if (spec.is_text) return text;
     if (spec.is_choice()) {
         for (const std::string& c : spec.choices)
             if (c == text) return text;

@@ -16,6 +16,7 @@ struct SettingSpec {
     std::vector<std::string> choices;  // choices: the allowed words (empty for a number)
     int length_power = 0;              // numbers: the unit, world length to this power (XPSM's coef: -1)
     bool is_list = false;              // numbers: a comma-separated list ("0.05,0.2,0.5"), each in the range
+    bool is_text = false;              // free text taken as written (a file's path); no range, no choices
 
     bool is_choice() const { return !choices.empty(); }
 };
@@ -25,6 +26,7 @@ public:
     double number(const std::string& name) const;
     const std::string& choice(const std::string& name) const;
     std::vector<double> numbers(const std::string& name) const;  // a list setting, as given
+    const std::string& text(const std::string& name) const { return choice(name); }  // a text setting
     const std::map<std::string, std::variant<double, std::string>>& values() const { return values_; }
     void set(const std::string& name, std::variant<double, std::string> value) { values_[name] = std::move(value); }
 

@@ -33,6 +33,7 @@ const std::vector<NoteInfo>& all_note_kinds() {
          "the spot's own perspective already spreads texels as the eye needs them: the focused map"},
         {no_light_axis, F, "point light without an axis",
          "the warp runs after the light's own perspective, which needs an axis and a cone: the focused map"},
+        {no_matrices, F, "no matrices", "the custom method's matrices setting names no file: the focused map"},
         {light_without_size, F, "a light without size",
          "PCSS sizes penumbrae by the light's radius or angular radius, here 0: hard shadows"},
         {search_clamped, F, "blocker search clamped",
@@ -42,6 +43,13 @@ const std::vector<NoteInfo>& all_note_kinds() {
         {not_planar_receiver, L, "only planar receivers", "planar shadows fall on planes only"},
         {below_plane, L, "casters below the plane", "they throw false shadows onto it"},
         {beyond_light, L, "casters beyond the light", "clipped at w = 0, else they throw anti-shadows"},
+        {missed_receivers, L, "visible receivers outside the maps",
+         "no map's [0,1]^3 holds them: their shadows are lost, they read as lit"},
+        {casters_before_near_plane, L, "casters before the near plane",
+         "inside a map's (u, v) square but at d < 0: an engine that clips them loses their shadows (ShadowLab clamps "
+         "them to depth 0, as depth clamping does)"},
+        {texels_outside_view, L, "texels outside the view",
+         "more than half of the maps' texels see no point of the view frustum's part of the scene"},
     };
     return kinds;
 }

@@ -30,6 +30,7 @@ enum class NoteKind {
     light_on_region,
     warp_not_needed,
     no_light_axis,
+    no_matrices,
     // Fallbacks of the lookups' filters.
     light_without_size,
     search_clamped,
@@ -39,6 +40,10 @@ enum class NoteKind {
     not_planar_receiver,
     below_plane,
     beyond_light,
+    // Limits of maps an engine computed (the custom method's coverage report).
+    missed_receivers,
+    casters_before_near_plane,
+    texels_outside_view,
 };
 
 struct Note {

@@ -6,6 +6,7 @@
 #include "lookup/lookup_settings.hpp"
 #include "methods/cascades.hpp"
 #include "methods/cube.hpp"
+#include "methods/custom.hpp"
 #include "methods/dpsm.hpp"
 #include "methods/focused.hpp"
 #include "methods/lispsm.hpp"
@@ -99,6 +100,13 @@ std::deque<Method>& registry() {
          .settings = cube_settings(),
          .lights = kPositionedOnly,
          .compute_maps = compute_cube},
+        {.name = "custom",
+         .title = "Your engine's matrices",
+         .description = "an engine's light view-projections, read from a GLSL, HLSL or JSON file under its named "
+                        "conventions, with a coverage report",
+         .settings = custom_settings(),
+         .lights = kAllLights,
+         .compute_maps = compute_custom},
         {.name = "volumes",
          .title = "Stencil shadow volumes",
          .description = "Crow, Heidmann, Everitt and Kilgard: silhouette edges extruded to infinity, faces counted "

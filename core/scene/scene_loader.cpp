@@ -33,6 +33,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -42,6 +43,8 @@
 
 #include "limits.hpp"
 #include "math/normalize.hpp"
+#include "scene/gltf_scene.hpp"
+#include "scene/mesh_scene.hpp"
 #include "scene/scene_error.hpp"
 
 namespace shadowlab {
@@ -577,7 +580,15 @@ private:
 
 }  // namespace
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, const SceneChoice& choice) {
+    if (is_gltf_file(path)) {
+        GltfScene gltf = read_gltf_scene(path, choice);
+        for (const std::string& assumed : gltf.defaulted) std::clog << path << ": " << assumed << "\n";
+        return std::move(gltf.scene);
+    }
+    check_choice(path, "camera", choice.camera, 1);  // a scene JSON or a lone mesh holds one of each
+    check_choice(path, "light", choice.light, 1);
+    if (is_mesh_file(path)) return scene_around_mesh(path);
     std::error_code error;
     std::ifstream in(path, std::ios::binary);
     if (!std::filesystem::is_regular_file(path, error) || !in)

@@ -43,13 +43,17 @@ void append_mesh(const aiMesh& mesh, const aiMatrix4x4& transform, TriangleMesh&
     }
 }
 
-void append_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
-                 TriangleMesh& out) {
-    const aiMatrix4x4 transform = parent * node.mTransformation;
-    for (unsigned i = 0; i < node.mNumMeshes; ++i)
-        append_mesh(*scene.mMeshes[node.mMeshes[i]], transform, out);
-    for (unsigned i = 0; i < node.mNumChildren; ++i)
-        append_node(scene, *node.mChildren[i], transform, out);
+// Calls visit(node, its world transform) for every node, depth first, a parent before its children.
+template <class Visit>
+void visit_nodes(const aiNode& node, const aiMatrix4x4& parent, const Visit& visit) {
+    const aiMatrix4x4 world_from_node = parent * node.mTransformation;
+    visit(node, world_from_node);
+    for (unsigned i = 0; i < node.mNumChildren; ++i) visit_nodes(*node.mChildren[i], world_from_node, visit);
+}
+
+void append_node_meshes(const aiScene& scene, const aiNode& node, const aiMatrix4x4& world_from_node,
+                        TriangleMesh& out) {
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) append_mesh(*scene.mMeshes[node.mMeshes[i]], world_from_node, out);
 }
 
 // Why Assimp gave no usable scene: its own reason, or (its OBJ reader takes any text and finds
@@ -86,38 +90,91 @@ void drop_degenerate(TriangleMesh& mesh) {
     mesh.degenerate_dropped = before - mesh.triangles.size();
 }
 
-}  // namespace
+// Refusals name the scene file, the JSON path and the mesh file.
+class MeshFileProblem {
+public:
+    MeshFileProblem(const std::filesystem::path& path, const std::string& scene_file, const std::string& json_path)
+        : path_(path), scene_file_(scene_file), json_path_(json_path) {}
 
-TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file,
-                                const std::string& json_path) {
-    const std::filesystem::path path = resolve(file, scene_file);
+    [[noreturn]] void refuse(const std::string& problem) const {
+        throw SceneError(scene_file_, json_path_, "mesh file " + path_.string() + ": " + problem);
+    }
+    [[noreturn]] void refuse_unread(const std::string& reason) const {
+        throw SceneError(scene_file_, json_path_, "cannot read mesh file " + path_.string() + ": " + reason);
+    }
+    [[noreturn]] void refuse_missing() const {
+        throw SceneError(scene_file_, json_path_, "mesh file not found: " + path_.string());
+    }
+
+    // Triangles placed, zero-area ones dropped; refused when a node transform overflowed a vertex.
+    void check_placed_and_drop_degenerate(TriangleMesh& mesh) const {
+        if (!std::all_of(mesh.vertices.begin(), mesh.vertices.end(), finite))
+            refuse("a node transform takes a vertex beyond float's range");
+        drop_degenerate(mesh);
+    }
+    // Why nothing is left: no triangles at all, or only zero-area ones.
+    [[noreturn]] void refuse_empty(std::size_t degenerate_dropped) const {
+        if (degenerate_dropped == 0) refuse("no triangles");
+        refuse("no triangle with a non-zero area (" + std::to_string(degenerate_dropped) + " degenerate)");
+    }
+
+private:
+    const std::filesystem::path& path_;
+    const std::string& scene_file_;
+    const std::string& json_path_;
+};
+
+// The file read through `importer` (which owns the result), only positions kept, so that corners
+// differing in normal (STL) or uv are joined.
+const aiScene& import_positions(Assimp::Importer& importer, const std::filesystem::path& path,
+                                const MeshFileProblem& problem) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-        throw SceneError(scene_file, json_path, "mesh file not found: " + path.string());
-
-    Assimp::Importer importer;
-    // Only positions are kept, so that corners differing in normal (STL) or uv are joined.
+    if (!std::filesystem::is_regular_file(path, error)) problem.refuse_missing();
     importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, kUnusedComponents);
     const aiScene* scene =
         importer.ReadFile(path.string(), aiProcess_RemoveComponent | aiProcess_Triangulate |
                                              aiProcess_JoinIdenticalVertices);
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-        throw SceneError(scene_file, json_path,
-                         "cannot read mesh file " + path.string() + ": " + import_failure(importer, scene));
+        problem.refuse_unread(import_failure(importer, scene));
+    if (const std::string bad = non_finite_vertex(*scene); !bad.empty()) problem.refuse(bad);
+    return *scene;
+}
 
-    const auto refuse = [&](const std::string& problem) {
-        throw SceneError(scene_file, json_path, "mesh file " + path.string() + ": " + problem);
-    };
-    if (const std::string bad = non_finite_vertex(*scene); !bad.empty()) refuse(bad);
+}  // namespace
+
+TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file,
+                                const std::string& json_path) {
+    const std::filesystem::path path = resolve(file, scene_file);
+    const MeshFileProblem problem(path, scene_file, json_path);
+    Assimp::Importer importer;
+    const aiScene& scene = import_positions(importer, path, problem);
     TriangleMesh mesh;
-    append_node(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
-    if (mesh.triangles.empty()) refuse("no triangles");
-    if (!std::all_of(mesh.vertices.begin(), mesh.vertices.end(), finite))
-        refuse("a node transform takes a vertex beyond float's range");
-    drop_degenerate(mesh);
-    if (mesh.triangles.empty())
-        refuse("no triangle with a non-zero area (" + std::to_string(mesh.degenerate_dropped) + " degenerate)");
+    visit_nodes(*scene.mRootNode, aiMatrix4x4(), [&](const aiNode& node, const aiMatrix4x4& world_from_node) {
+        append_node_meshes(scene, node, world_from_node, mesh);
+    });
+    if (mesh.triangles.empty()) problem.refuse_empty(0);
+    problem.check_placed_and_drop_degenerate(mesh);
+    if (mesh.triangles.empty()) problem.refuse_empty(mesh.degenerate_dropped);
     return mesh;
+}
+
+std::vector<NodeMesh> load_node_meshes(const std::string& file, const std::string& scene_file,
+                                       const std::string& json_path) {
+    const std::filesystem::path path = resolve(file, scene_file);
+    const MeshFileProblem problem(path, scene_file, json_path);
+    Assimp::Importer importer;
+    const aiScene& scene = import_positions(importer, path, problem);
+    std::vector<NodeMesh> nodes;
+    std::size_t degenerate_dropped = 0;
+    visit_nodes(*scene.mRootNode, aiMatrix4x4(), [&](const aiNode& node, const aiMatrix4x4& world_from_node) {
+        NodeMesh placed{.node_name = node.mName.C_Str(), .mesh = {}};
+        append_node_meshes(scene, node, world_from_node, placed.mesh);
+        problem.check_placed_and_drop_degenerate(placed.mesh);
+        degenerate_dropped += placed.mesh.degenerate_dropped;
+        if (!placed.mesh.triangles.empty()) nodes.push_back(std::move(placed));
+    });
+    if (nodes.empty()) problem.refuse_empty(degenerate_dropped);
+    return nodes;
 }
 
 }  // namespace shadowlab

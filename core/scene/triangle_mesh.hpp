@@ -28,4 +28,16 @@ struct TriangleMesh {
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file,
                                 const std::string& json_path);
 
+// The meshes one node of a file holds, together, placed in the file's world by the node's transform
+// and its parents' (a glTF scene's objects, one per node).
+struct NodeMesh {
+    std::string node_name;  // as the file names the node; may be empty
+    TriangleMesh mesh;
+};
+
+// The same file kept apart by node, in the file's node order (depth first); a node left with no
+// triangle of non-zero area is left out. Refused as load_triangle_mesh refuses, when no node is left.
+std::vector<NodeMesh> load_node_meshes(const std::string& file, const std::string& scene_file,
+                                       const std::string& json_path);
+
 }  // namespace shadowlab

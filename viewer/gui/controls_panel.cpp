@@ -29,9 +29,9 @@ QSlider* slider(int min, int max, QWidget* parent) {
 }
 
 // A setting's editor: a spin box over its range, a combo box over its choices, or a line of
-// comma-separated numbers for a list.
+// comma-separated numbers for a list or of free text (a file's path).
 QWidget* setting_editor(const SettingSpec& spec, QWidget* parent) {
-    if (spec.is_list) return new QLineEdit(QString::fromStdString(spec.default_value), parent);
+    if (spec.is_list || spec.is_text) return new QLineEdit(QString::fromStdString(spec.default_value), parent);
     if (spec.is_choice()) {
         auto* box = new QComboBox(parent);
         for (const std::string& choice : spec.choices) box->addItem(QString::fromStdString(choice));

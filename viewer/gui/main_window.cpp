@@ -25,7 +25,6 @@
 #include "gui/view_panel.hpp"
 #include "model/camera_in_shadow.hpp"
 #include "render/rgb_image.hpp"
-#include "scene/mesh_scene.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace shadowlab {
@@ -35,11 +34,6 @@ constexpr int kMaxRecent = 8;
 constexpr int kIdleMessageLines = 1;   // the views get the height
 constexpr int kErrorMessageLines = 4;  // an error opens the messages until the next good change
 constexpr int kResizeSettleMs = 250;
-
-Scene load_any(const QString& path) {
-    const std::string file = path.toStdString();
-    return QFileInfo(path).suffix().compare("json", Qt::CaseInsensitive) == 0 ? load_scene(file) : scene_around_mesh(file);
-}
 
 // Long work in the window: a wait cursor and a status line, painted before the work starts, both
 // gone when it ends.
@@ -177,7 +171,7 @@ void MainWindow::build_menus() {
 
 bool MainWindow::open_file(const QString& path) {
     try {
-        Scene loaded = load_any(path);
+        Scene loaded = load_scene(path.toStdString());  // JSON, glTF (its own camera and light) or a lone mesh
         std::swap(scene_, loaded);
         controls_->set_light_direction(scene_.light.direction);
         const std::optional<Camera> outside = std::exchange(camera_outside_, std::nullopt);

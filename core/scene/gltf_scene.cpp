@@ -1,0 +1,504 @@
+// glTF 2.0 scenes. The meshes come through Assimp (triangle_mesh: one object per node). The cameras,
+// the KHR_lights_punctual lights and the nodes that place them are read here from the file's JSON,
+// in double and with their JSON paths for messages: Assimp 5.2 gives a camera's horizontal field of
+// view as yfov × aspect (not the angle), a missing zfar as 100 (not infinite), its node's translation
+// twice (once as mPosition, once in the node's transform), and a light's range only as node metadata.
+#include "scene/gltf_scene.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
+
+#include "io/value_text.hpp"
+#include "limits.hpp"
+#include "math/normalize.hpp"
+#include "scene/mesh_scene.hpp"
+#include "scene/scene_error.hpp"
+#include "scene/triangle_mesh.hpp"
+
+namespace shadowlab {
+namespace {
+
+using nlohmann::json;
+
+// glTF gives a spot or point light's reach (`range`: where it fades to nothing) but no near plane;
+// its maps start at this share of the reach.
+constexpr double kRangeNearShare = 1e-3;
+// A camera without `zfar` has its far plane at infinity; ShadowLab's camera needs a finite one, this
+// many times the distance from the eye to the meshes' farthest corner.
+constexpr double kFarBeyondMeshes = 2.0;
+// A spot's default outer cone angle (KHR_lights_punctual), from its axis.
+constexpr double kDefaultOuterConeAngle = std::numbers::pi / 4.0;
+
+std::string indexed(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
+std::string member_path(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+}
+std::string shown(double value) { return significant(value, kValueDigits); }
+std::string shown(const nlohmann::json& value) {
+    constexpr std::size_t kMaxShownChars = 60;  // a long value is cut in messages
+    const std::string text = value.dump();
+    return text.size() <= kMaxShownChars ? text : text.substr(0, kMaxShownChars - 3) + "...";
+}
+
+std::string lowercase_extension(const std::string& file) {
+    std::string extension = std::filesystem::path(file).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    return extension;
+}
+
+// ---- the file's JSON -------------------------------------------------------------------------
+
+std::string file_bytes(const std::string& file) {
+    std::error_code error;
+    std::ifstream in(file, std::ios::binary);
+    if (!std::filesystem::is_regular_file(file, error) || !in) throw SceneError(file, "", "cannot open file");
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+// A .glb is a 12-byte header (magic "glTF", version 2, length), then chunks of (length, type, data);
+// the first chunk holds the JSON (glTF 2.0, "Binary glTF Layout"). Words are little-endian.
+std::string glb_json(const std::string& bytes, const std::string& file) {
+    const auto word = [&](std::size_t at) {
+        std::uint32_t value = 0;
+        for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<unsigned char>(bytes[at + i]);
+        return value;
+    };
+    constexpr std::uint32_t kMagic = 0x46546C67, kVersion = 2, kJsonChunk = 0x4E4F534A;  // "glTF", "JSON"
+    constexpr std::size_t kJsonStart = 20;                                               // header and chunk head
+    if (bytes.size() < kJsonStart || word(0) != kMagic)
+        throw SceneError(file, "", "not a binary glTF: no \"glTF\" header");
+    if (word(4) != kVersion)
+        throw SceneError(file, "", "binary glTF version " + std::to_string(word(4)) + "; ShadowLab reads version 2");
+    const std::uint32_t length = word(12);
+    if (word(16) != kJsonChunk || length > bytes.size() - kJsonStart)
+        throw SceneError(file, "", "binary glTF: its first chunk is not a whole JSON chunk");
+    return bytes.substr(kJsonStart, length);
+}
+
+json gltf_json(const std::string& file) {
+    const std::string bytes = file_bytes(file);
+    try {
+        json root = json::parse(lowercase_extension(file) == ".glb" ? glb_json(bytes, file) : bytes);
+        if (!root.is_object())
+            throw SceneError(file, "", "expected a glTF JSON object, got " + std::string(root.type_name()));
+        return root;
+    } catch (const json::exception& error) {       // a syntax error, or a number beyond double's range
+        const std::string message = error.what();  // "[json.exception.parse_error.101] parse error at line 3, ..."
+        throw SceneError(file, "", "malformed JSON: " + message.substr(message.find(']') + 2));
+    }
+}
+
+// ---- fields, with their paths ----------------------------------------------------------------
+
+// Reads fields of the glTF JSON, refusing with the file and the field's path what the glTF 2.0
+// schema or ShadowLab's camera and light cannot take.
+class GltfFields {
+public:
+    explicit GltfFields(const std::string& file) : file_(file) {}
+
+    [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+        throw SceneError(file_, path, problem);
+    }
+
+    // The member `key` of an object, or nullptr; the object itself must be one.
+    const json* member(const json& object, const std::string& path, const char* key) const {
+        if (!object.is_object()) fail(path, "expected an object, got " + std::string(object.type_name()));
+        const auto found = object.find(key);
+        return found == object.end() ? nullptr : &*found;
+    }
+    // The array `key` of an object; an empty one when absent.
+    const json& array(const json& object, const std::string& path, const char* key) const {
+        const json* value = member(object, path, key);
+        if (value && !value->is_array()) fail(member_path(path, key), "expected an array");
+        return value ? *value : no_items();
+    }
+    static const json& no_items() {
+        static const json none = json::array();
+        return none;
+    }
+    // The object at a chain of keys (extensions.KHR_lights_punctual), or nullptr.
+    const json* nested(const json& object, const std::string& path, std::initializer_list<const char*> keys) const {
+        const json* value = &object;
+        std::string at = path;
+        for (const char* key : keys) {
+            value = member(*value, at, key);
+            if (!value) return nullptr;
+            at = member_path(at, key);
+        }
+        return value;
+    }
+    std::optional<double> number(const json& object, const std::string& path, const char* key) const {
+        const json* value = member(object, path, key);
+        if (!value) return std::nullopt;
+        if (!value->is_number()) fail(member_path(path, key), "expected a number, got " + shown(*value));
+        return value->get<double>();
+    }
+    double required_number(const json& object, const std::string& path, const char* key) const {
+        const std::optional<double> value = number(object, path, key);
+        if (!value) fail(member_path(path, key), "required, but missing");
+        return *value;
+    }
+    // `count` numbers, or none when absent.
+    std::vector<double> numbers(const json& object, const std::string& path, const char* key, std::size_t count) const {
+        const json* value = member(object, path, key);
+        if (!value) return {};
+        const bool ok = value->is_array() && value->size() == count &&
+                        std::all_of(value->begin(), value->end(), [](const json& item) { return item.is_number(); });
+        if (!ok) fail(member_path(path, key), "expected an array of " + std::to_string(count) + " numbers");
+        return value->get<std::vector<double>>();
+    }
+    std::string text(const json& object, const std::string& path, const char* key) const {
+        const json* value = member(object, path, key);
+        if (!value || !value->is_string()) fail(member_path(path, key), "expected a string");
+        return value->get<std::string>();
+    }
+    // An index into an array of `count` items.
+    std::size_t index(const json& value, const std::string& path, std::size_t count) const {
+        if (value.is_number_unsigned() && value.get<std::uint64_t>() < count) return value.get<std::size_t>();
+        if (count == 0) fail(path, "an index into an array the file leaves empty or out, got " + shown(value));
+        fail(path, "expected an index below " + std::to_string(count) + ", got " + shown(value));
+    }
+    std::optional<std::size_t> index(const json& object, const std::string& path, const char* key,
+                                     std::size_t count) const {
+        const json* value = member(object, path, key);
+        return value ? std::optional(index(*value, member_path(path, key), count)) : std::nullopt;
+    }
+    void expect(bool ok, const std::string& path, const std::string& expected, double got) const {
+        if (!ok) fail(path, "expected " + expected + ", got " + shown(got));
+    }
+
+private:
+    const std::string& file_;
+};
+
+constexpr const char* kLightsPath = "extensions.KHR_lights_punctual.lights";
+
+const json& cameras_of(const GltfFields& fields, const json& root) { return fields.array(root, "", "cameras"); }
+
+const json& lights_of(const GltfFields& fields, const json& root) {
+    const json* punctual = fields.nested(root, "", {"extensions", "KHR_lights_punctual"});
+    return punctual ? fields.array(*punctual, "extensions.KHR_lights_punctual", "lights") : GltfFields::no_items();
+}
+
+// ---- nodes: where the cameras and lights stand ----------------------------------------------
+
+// For each camera and light, the world transform of the first node holding it, depth first from the
+// default scene's roots (as triangle_mesh orders the objects). A camera or light no node holds is
+// nowhere.
+struct Placements {
+    std::map<std::size_t, glm::dmat4> world_from_camera, world_from_light;
+};
+
+class NodeWalk {
+public:
+    NodeWalk(const GltfFields& fields, const json& root) : fields_(fields), root_(root) {}
+
+    Placements place() const {
+        Placements placements;
+        const json& scenes = fields_.array(root_, "", "scenes");
+        if (scenes.empty()) return placements;
+        const std::size_t scene = fields_.index(root_, "", "scene", scenes.size()).value_or(0);
+        const std::string scene_path = indexed("scenes", scene);
+        const json& roots = fields_.array(scenes[scene], scene_path, "nodes");
+        std::vector<bool> reached(nodes().size(), false);
+        // Depth first without recursion, so that a long chain of nodes cannot exhaust the stack.
+        std::vector<std::pair<std::size_t, glm::dmat4>> pending;
+        for (std::size_t i = roots.size(); i-- > 0;)
+            pending.emplace_back(fields_.index(roots[i], indexed(scene_path + ".nodes", i), nodes().size()),
+                                 glm::dmat4(1.0));
+        while (!pending.empty()) {
+            const auto [node, world_from_parent] = pending.back();
+            pending.pop_back();
+            const std::string path = indexed("nodes", node);
+            if (reached[node])
+                fields_.fail(path, "reached twice: a glTF node has one parent and is not its own ancestor");
+            reached[node] = true;
+            const glm::dmat4 world_from_node = world_from_parent * parent_from_node(nodes()[node], path);
+            if (const auto camera = fields_.index(nodes()[node], path, "camera", cameras_of(fields_, root_).size()))
+                placements.world_from_camera.try_emplace(*camera, world_from_node);
+            if (const auto light = light_of(nodes()[node], path))
+                placements.world_from_light.try_emplace(*light, world_from_node);
+            const json& children = fields_.array(nodes()[node], path, "children");
+            for (std::size_t i = children.size(); i-- > 0;)
+                pending.emplace_back(fields_.index(children[i], indexed(path + ".children", i), nodes().size()),
+                                     world_from_node);
+        }
+        return placements;
+    }
+
+private:
+    const json& nodes() const { return fields_.array(root_, "", "nodes"); }
+
+    // glTF 2.0, "Transformations": a column-major `matrix`, or T * R * S from `translation`,
+    // `rotation` (a unit quaternion, x, y, z, w) and `scale`.
+    glm::dmat4 parent_from_node(const json& node, const std::string& path) const {
+        if (const std::vector<double> m = fields_.numbers(node, path, "matrix", 16); !m.empty())
+            return glm::make_mat4(m.data());
+        glm::dmat4 transform(1.0);
+        if (const std::vector<double> t = fields_.numbers(node, path, "translation", 3); !t.empty())
+            transform = glm::translate(transform, glm::dvec3(t[0], t[1], t[2]));
+        if (const std::vector<double> r = fields_.numbers(node, path, "rotation", 4); !r.empty()) {
+            const glm::dquat rotation(r[3], r[0], r[1], r[2]);
+            if (!(glm::length(rotation) > 0.0)) fields_.fail(path + ".rotation", "expected a unit quaternion, got 0");
+            transform *= glm::mat4_cast(glm::normalize(rotation));
+        }
+        if (const std::vector<double> s = fields_.numbers(node, path, "scale", 3); !s.empty())
+            transform = glm::scale(transform, glm::dvec3(s[0], s[1], s[2]));
+        return transform;
+    }
+
+    std::optional<std::size_t> light_of(const json& node, const std::string& path) const {
+        const json* punctual = fields_.nested(node, path, {"extensions", "KHR_lights_punctual"});
+        return punctual ? fields_.index(*punctual, path + ".extensions.KHR_lights_punctual", "light",
+                                        lights_of(fields_, root_).size())
+                        : std::nullopt;
+    }
+
+    const GltfFields& fields_;
+    const json& root_;
+};
+
+// ---- cameras and lights ----------------------------------------------------------------------
+
+glm::dvec3 world_point(const glm::dmat4& world_from_node, const glm::dvec3& p) {
+    return glm::dvec3(world_from_node * glm::dvec4(p, 1.0));
+}
+glm::dvec3 world_direction(const glm::dmat4& world_from_node, const glm::dvec3& d) {
+    return glm::dvec3(world_from_node * glm::dvec4(d, 0.0));
+}
+
+double farthest_corner_distance(const Aabb& box, const glm::dvec3& from) {
+    double farthest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 p{corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y,
+                           corner & 4 ? box.max.z : box.min.z};
+        farthest = std::max(farthest, glm::length(p - from));
+    }
+    return farthest;
+}
+
+glm::dvec3 normalize_or_zero(const glm::dvec3& v) {
+    return v == glm::dvec3(0.0) ? v : normalize_safely(v);  // zero: a scale of 0, which validate_scene names
+}
+
+// A light shines down its node's −z from the node's origin (KHR_lights_punctual).
+Light placed_light(Light light, const glm::dmat4& world_from_node) {
+    light.position = world_point(world_from_node, glm::dvec3(0.0));
+    light.direction = normalize_or_zero(world_direction(world_from_node, {0.0, 0.0, -1.0}));
+    return light;
+}
+
+// A perspective camera as the file gives it, and the node that places it.
+struct PlacedLens {
+    std::string path;  // cameras[i].perspective
+    double yfov, znear;
+    std::optional<double> aspect, zfar;
+    glm::dmat4 world_from_camera;
+};
+
+// The chosen camera and light, read and checked before the meshes are: a bad camera or light is named
+// by its JSON path rather than by whatever Assimp makes of it.
+class ChosenParts {
+public:
+    ChosenParts(const GltfFields& fields, const json& root, const Placements& placements,
+                std::vector<std::string>& defaulted)
+        : fields_(fields), root_(root), placements_(placements), defaulted_(defaulted) {}
+
+    // The chosen camera's lens and node, or nullopt (said in `defaulted`) when the file has no camera,
+    // the chosen one is orthographic or no node holds it.
+    std::optional<PlacedLens> lens(std::size_t chosen) const {
+        const json& cameras = cameras_of(fields_, root_);
+        if (cameras.empty()) {
+            defaulted_.push_back(
+                "no camera: the default one, looking at the meshes from the front and above, and a "
+                "ground plane under them (a file without a camera is a model, not a scene)");
+            return std::nullopt;
+        }
+        const std::string path = indexed("cameras", chosen);
+        const std::string type = fields_.text(cameras[chosen], path, "type");
+        if (type == "orthographic") {
+            defaulted_.push_back(path +
+                                 " is orthographic, and ShadowLab's camera a perspective pinhole: the default "
+                                 "camera instead, looking at the meshes from the front and above");
+            return std::nullopt;
+        }
+        if (type != "perspective")
+            fields_.fail(path + ".type", "expected \"perspective\" or \"orthographic\", got \"" + type + "\"");
+        PlacedLens lens = perspective(cameras[chosen], path);
+        const auto placed = placements_.world_from_camera.find(chosen);
+        if (placed == placements_.world_from_camera.end()) {
+            defaulted_.push_back(path + " is held by no node of the scene: the default camera instead");
+            return std::nullopt;
+        }
+        lens.world_from_camera = placed->second;
+        return lens;
+    }
+
+    // The chosen light, or nullopt (said in `defaulted`) when the file has none or no node holds it.
+    std::optional<Light> light(std::size_t chosen) const {
+        const json& lights = lights_of(fields_, root_);
+        if (lights.empty()) {
+            defaulted_.push_back("no KHR_lights_punctual light: the default sun, from above");
+            return std::nullopt;
+        }
+        const std::string path = indexed(kLightsPath, chosen);
+        const Light light = punctual_light(lights[chosen], path);
+        const auto placed = placements_.world_from_light.find(chosen);
+        if (placed == placements_.world_from_light.end()) {
+            defaulted_.push_back(path + " is held by no node of the scene: the default sun instead");
+            return std::nullopt;
+        }
+        return placed_light(light, placed->second);
+    }
+
+private:
+    PlacedLens perspective(const json& camera, const std::string& camera_path) const {
+        const std::string path = camera_path + ".perspective";
+        const json* lens = fields_.member(camera, camera_path, "perspective");
+        if (!lens) fields_.fail(path, "required for a perspective camera, but missing");
+        PlacedLens out{.path = path,
+                       .yfov = fields_.required_number(*lens, path, "yfov"),
+                       .znear = fields_.required_number(*lens, path, "znear"),
+                       .aspect = fields_.number(*lens, path, "aspectRatio"),
+                       .zfar = fields_.number(*lens, path, "zfar"),
+                       .world_from_camera = glm::dmat4(1.0)};
+        fields_.expect(out.yfov > 0.0 && out.yfov < std::numbers::pi, path + ".yfov", "an angle in (0, π) radians",
+                       out.yfov);
+        fields_.expect(out.znear > 0.0, path + ".znear", "a positive distance", out.znear);
+        if (out.aspect) fields_.expect(*out.aspect > 0.0, path + ".aspectRatio", "a positive ratio", *out.aspect);
+        if (out.zfar)
+            fields_.expect(*out.zfar > out.znear, path + ".zfar", "a distance beyond znear (" + shown(out.znear) + ")",
+                           *out.zfar);
+        return out;
+    }
+
+    // KHR_lights_punctual: a light's type, its spot cone and its range, before a node places it.
+    Light punctual_light(const json& light, const std::string& path) const {
+        const std::string type = fields_.text(light, path, "type");
+        Light out;
+        if (type == "directional") return out;  // `range` is for spot and point lights only
+        if (type == "point")
+            out.type = LightType::point;
+        else if (type == "spot")
+            out.type = LightType::spot;
+        else
+            fields_.fail(path + ".type", "expected \"directional\", \"point\" or \"spot\", got \"" + type + "\"");
+        if (out.type == LightType::spot) {
+            const json* spot = fields_.member(light, path, "spot");
+            const double outer =
+                spot ? fields_.number(*spot, path + ".spot", "outerConeAngle").value_or(kDefaultOuterConeAngle)
+                     : kDefaultOuterConeAngle;
+            // ShadowLab's cone is its full apex angle, below 180° (a map cannot hold a half-space).
+            fields_.expect(outer > 0.0 && outer < std::numbers::pi / 2.0, path + ".spot.outerConeAngle",
+                           "an angle in (0, π/2) radians", outer);
+            out.cone_deg = glm::degrees(2.0 * outer);
+        }
+        if (const std::optional<double> range = fields_.number(light, path, "range")) {
+            fields_.expect(*range > 0.0, path + ".range", "a positive distance", *range);
+            out.range = LightRange{.near = kRangeNearShare * *range, .far = *range};
+        }
+        return out;
+    }
+
+    const GltfFields& fields_;
+    const json& root_;
+    const Placements& placements_;
+    std::vector<std::string>& defaulted_;
+};
+
+// glTF 2.0, "Cameras": a camera looks down its node's −z, +y up. The target, which the window orbits
+// about, lies ahead at the distance of the meshes' centre.
+Camera placed_camera(const PlacedLens& lens, const Aabb& meshes, std::vector<std::string>& defaulted) {
+    Camera camera;
+    camera.fov_y_deg = glm::degrees(lens.yfov);
+    camera.near = lens.znear;
+    camera.position = world_point(lens.world_from_camera, glm::dvec3(0.0));
+    camera.up = world_direction(lens.world_from_camera, {0.0, 1.0, 0.0});
+    const glm::dvec3 ahead = normalize_or_zero(world_direction(lens.world_from_camera, {0.0, 0.0, -1.0}));
+    const double to_centre = glm::length(0.5 * (meshes.min + meshes.max) - camera.position);
+    camera.target = camera.position + std::max(to_centre, lens.znear) * ahead;
+    if (lens.aspect)
+        camera.aspect = *lens.aspect;
+    else
+        defaulted.push_back(lens.path + " has no aspectRatio: " + shown(camera.aspect) + " (16:9)");
+    if (lens.zfar) {
+        camera.far = *lens.zfar;
+    } else {
+        camera.far = std::clamp(kFarBeyondMeshes * farthest_corner_distance(meshes, camera.position), 2.0 * lens.znear,
+                                limits::far_over_near_max * lens.znear);
+        defaulted.push_back(lens.path + " has no zfar (infinite): far = " + shown(camera.far) +
+                            ", twice the distance to the meshes' farthest corner");
+    }
+    return camera;
+}
+
+// Each node holding meshes, as one object that casts and receives; its vertices already in the world.
+std::vector<SceneObject> node_objects(const std::string& file) {
+    std::vector<SceneObject> objects;
+    // Absolute: load_node_meshes reads a relative path as relative to the scene file's directory.
+    for (NodeMesh& node : load_node_meshes(std::filesystem::absolute(file).string(), file, "meshes")) {
+        SceneObject object;
+        object.name = node.node_name.empty() ? "node_" + std::to_string(objects.size()) : node.node_name;
+        object.shape = Shape::mesh;
+        object.mesh_file = file;
+        object.mesh = std::make_shared<const TriangleMesh>(std::move(node.mesh));
+        objects.push_back(std::move(object));
+    }
+    return objects;
+}
+
+}  // namespace
+
+bool is_gltf_file(const std::string& file) {
+    const std::string extension = lowercase_extension(file);
+    return extension == ".gltf" || extension == ".glb";
+}
+
+void check_choice(const std::string& file, const std::string& what, std::size_t index, std::size_t count) {
+    if (index < count) return;
+    const std::string held = count == 1
+                                 ? "one " + what + " (0)"
+                                 : std::to_string(count) + " " + what + "s (0 … " + std::to_string(count - 1) + ")";
+    throw SceneError(file, "", what + " " + std::to_string(index) + " asked for, but the file holds " + held);
+}
+
+GltfScene read_gltf_scene(const std::string& file, const SceneChoice& choice) {
+    const json root = gltf_json(file);
+    const GltfFields fields(file);
+    // A file without cameras or lights gets the default of each: it holds one.
+    check_choice(file, "camera", choice.camera, std::max<std::size_t>(cameras_of(fields, root).size(), 1));
+    check_choice(file, "light", choice.light, std::max<std::size_t>(lights_of(fields, root).size(), 1));
+    const Placements placements = NodeWalk(fields, root).place();
+    GltfScene out;
+    const ChosenParts chosen(fields, root, placements, out.defaulted);
+    const std::optional<PlacedLens> lens = chosen.lens(choice.camera);
+    const std::optional<Light> light = chosen.light(choice.light);
+
+    Scene& scene = out.scene;
+    scene.name = std::filesystem::path(file).stem().string();
+    scene.source_file = file;
+    scene.objects = node_objects(file);
+    const Aabb meshes = scene.bounds();
+    scene.camera = lens ? placed_camera(*lens, meshes, out.defaulted) : camera_framing(meshes);
+    if (cameras_of(fields, root).empty()) scene.objects.insert(scene.objects.begin(), ground_under(meshes));
+    scene.light = light.value_or(sun_from_above());
+    validate_scene(scene);
+    return out;
+}
+
+}  // namespace shadowlab
