@@ -12,7 +12,7 @@ namespace shadowlab {
 
 struct BenchOptions {
     std::vector<std::string> scene_files;
-    SceneChoice scene_choice;  // which of each scene file's cameras and lights (a glTF file may hold several)
+    SceneChoice scene_choice;          // which of each scene file's cameras and lights (a glTF file may hold several)
     std::vector<std::string> methods;  // empty: all
     std::vector<int> resolutions{256, 512, 1024, 2048, 4096};
     int width = 640, height = 360;

@@ -50,8 +50,9 @@ void parse_size(const std::string& text, int& width, int& height) {
 void add_scene_choice(CLI::App* command, shadowlab::SceneChoice& choice) {
     command->add_option("--camera-index", choice.camera, "the scene file's camera to take, 0-based (glTF: cameras[N])")
         ->capture_default_str();
-    command->add_option("--light-index", choice.light,
-                        "the scene file's light to take, 0-based (glTF: KHR_lights_punctual's lights[N])")
+    command
+        ->add_option("--light-index", choice.light,
+                     "the scene file's light to take, 0-based (glTF: KHR_lights_punctual's lights[N])")
         ->capture_default_str();
 }
 
@@ -88,7 +89,8 @@ int main(int argc, char** argv) {
     shadowlab::BenchOptions bench;
     std::string bench_size = "640x360";
     CLI::App* bench_cmd = app.add_subcommand("bench", "every method at every resolution: a CSV and a plot of error against cost");
-    bench_cmd->add_option("scenes", bench.scene_files, "scene files: JSON, glTF (.gltf, .glb) or meshes alone")->required();
+    bench_cmd->add_option("scenes", bench.scene_files, "scene files: JSON, glTF (.gltf, .glb) or meshes alone")
+        ->required();
     add_scene_choice(bench_cmd, bench.scene_choice);
     bench_cmd->add_option("--methods", bench.methods, "methods, comma-separated (default: all)")->delimiter(',');
     bench_cmd->add_option("--resolutions", bench.resolutions, "map resolutions, comma-separated")->delimiter(',')->capture_default_str();

@@ -17,7 +17,7 @@ namespace shadowlab {
 
 struct SweepOptions {
     std::string scene_file;
-    SceneChoice scene_choice;  // which of the scene file's cameras and lights (a glTF file may hold several)
+    SceneChoice scene_choice;          // which of the scene file's cameras and lights (a glTF file may hold several)
     std::vector<std::string> methods;  // empty: all
     int resolution = 1024;
     int width = 480, height = 270;

@@ -129,7 +129,8 @@ std::vector<std::array<ScreenVertex, 3>> screen_triangles(const WorldTriangles& 
 void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object, const ShadowMap& map,
               DepthMap& out) {
     const TexelRange tile = tile_texels(map, out.resolution);
-    const std::vector<std::array<ScreenVertex, 3>> screen = screen_triangles(triangles, casts_per_object, map, out.resolution);
+    const std::vector<std::array<ScreenVertex, 3>> screen =
+        screen_triangles(triangles, casts_per_object, map, out.resolution);
     const int rows = tile.last.y - tile.first.y + 1, bands = std::max(1, std::min(row_threads(), rows));
     std::vector<std::thread> workers;
     for (int b = 0; b < bands; ++b)

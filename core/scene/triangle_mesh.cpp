@@ -142,8 +142,7 @@ const aiScene& import_positions(Assimp::Importer& importer, const std::filesyste
 
 }  // namespace
 
-TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file,
-                                const std::string& json_path) {
+TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path) {
     const std::filesystem::path path = resolve(file, scene_file);
     const MeshFileProblem problem(path, scene_file, json_path);
     Assimp::Importer importer;
