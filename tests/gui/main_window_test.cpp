@@ -1,7 +1,11 @@
 // The window as a user drives it: switching the method changes what the views draw; a bad file
 // is reported by name and field while the previous scene stays; a mesh alone becomes a scene; the
 // step list fits at 1280 x 800 and shows matrices as aligned grids; the window's matrices are the
-// CLI's; an orbit survives a change of step; the messages take one line until an error.
+// CLI's; an engine's light matrices imported or pasted give the same map; an orbit survives a change
+// of step; the messages take one line until an error.
+#include <fstream>
+#include <sstream>
+
 #include <QAction>
 #include <QCheckBox>
 #include <QClipboard>
@@ -34,6 +38,7 @@
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
 #include "io/inspection_json.hpp"
+#include "maps/clip_conventions.hpp"
 #include "math/matrix.hpp"
 
 using namespace shadowlab;
@@ -337,6 +342,51 @@ private slots:
     // For every map method the window's matrix is the one `shadowlab inspect --json` prints, though
     // the Camera panel's shape is not the scene camera's: the panel letterboxes. Unlocked, the
     // aspect is the panel's, the matrix changes and the status line says where the aspect comes from.
+    // An engine's matrices, here the focused map's as OpenGL would hold it, imported from a file and
+    // pasted from the clipboard: the window switches to `custom` and reads back the same map; a
+    // file of 15 numbers is refused by name and the inspection shown stays.
+    void importedAndPastedLightMatricesGiveTheSameMap() {
+        QVERIFY(window_->open_file(source("data/scenes/box_on_plane.json")));
+        window_->controls()->set_method("focused");
+        QApplication::processEvents();
+        const glm::dmat4 focused = window_->inspection()->setup.maps[0].world_to_uvz;
+        // As an OpenGL engine holds it: clip space [-1, 1]³, written as GLSL's mat4, column by column.
+        const glm::dmat4 clip_from_world = glm::inverse(uvz_from_clip({})) * focused;
+        std::ostringstream text;
+        text.precision(17);
+        text << "uniform mat4 lightViewProjection = mat4(";
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) text << clip_from_world[c][r] << (c == 3 && r == 3 ? ");\n" : ", ");
+        const std::string glsl = text.str();
+        QTemporaryDir dir;
+        const QString file = dir.filePath("engine.glsl");
+        std::ofstream(file.toStdString()) << glsl;
+        const auto same_map = [&] {
+            const glm::dmat4 imported = window_->inspection()->setup.maps[0].world_to_uvz;
+            double largest = 0.0;
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) largest = std::max(largest, std::abs(imported[c][r] - focused[c][r]));
+            return largest < 1e-9;
+        };
+        window_->import_light_matrices(file);
+        QApplication::processEvents();
+        QCOMPARE(window_->inspection()->name(), std::string("custom"));
+        QVERIFY2(same_map(), "imported from a file");
+        window_->controls()->set_method("focused");
+        QApplication::processEvents();
+        QApplication::clipboard()->setText(QString::fromStdString(glsl));
+        window_->paste_light_matrices();
+        QApplication::processEvents();
+        QCOMPARE(window_->inspection()->name(), std::string("custom"));
+        QVERIFY2(same_map(), "pasted");
+        const QString bad = dir.filePath("short.glsl");
+        std::ofstream(bad.toStdString()) << "mat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0)";
+        window_->import_light_matrices(bad);
+        QApplication::processEvents();
+        QVERIFY2(window_->last_message().contains("short.glsl"), qPrintable(window_->last_message()));
+        QVERIFY2(same_map(), "the inspection shown stays");
+    }
+
     void theWindowsMatricesAreTheClis() {
         window_->resize(1600, 1000);
         const QString scene = source("data/scenes/default.json");

@@ -271,6 +271,16 @@ void ControlsPanel::set_method(const QString& name) {
     if (index >= 0) method_->setCurrentIndex(index);
 }
 
+bool ControlsPanel::set_text_setting(const QString& name, const QString& value) {
+    for (QWidget* editor : setting_editors_)
+        if (auto* line = qobject_cast<QLineEdit*>(editor); line && editor->objectName() == name) {
+            line->setText(value);
+            emit changed();
+            return true;
+        }
+    return false;
+}
+
 void ControlsPanel::set_resolution(int resolution) {
     const int index = resolution_->findData(resolution);
     if (index >= 0) resolution_->setCurrentIndex(index);

@@ -32,6 +32,9 @@ public:
     glm::dvec3 light_direction() const;
     void set_light_direction(const glm::dvec3& direction);  // without emitting changed()
     void set_method(const QString& name);
+    // A text setting of the current method (a file path: custom's `matrices`); emits changed().
+    // False when the method has no such text setting.
+    bool set_text_setting(const QString& name, const QString& value);
     void set_resolution(int resolution);
     QComboBox* method_selector() const { return method_; }
     bool camera_in_shadow() const;

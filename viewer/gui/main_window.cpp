@@ -160,6 +160,8 @@ void MainWindow::build_menus() {
         matrices->addAction(QString("%1 to clipboard").arg(name), this, [this, f] { export_matrices(f, true); });
     }
     file->addSeparator();
+    file->addAction("&Import light matrices…", this, &MainWindow::import_dialog);
+    file->addAction("Paste light matrices", this, &MainWindow::paste_light_matrices);
     file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
     QMenu* view = menuBar()->addMenu("&View");
     for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
@@ -352,6 +354,27 @@ void MainWindow::export_matrices(MatrixFormat format, bool to_clipboard) {
     std::ofstream out(path.toStdString());
     out << text.toStdString();
     message(out ? "wrote " + path : "cannot write " + path, !out);
+}
+
+void MainWindow::import_dialog() {
+    const QString path = QFileDialog::getOpenFileName(this, "Import an engine's light matrices", QString(),
+                                                      "Light matrices (*.glsl *.hlsl *.json *.txt);;All files (*)");
+    if (!path.isEmpty()) import_light_matrices(path);
+}
+
+void MainWindow::import_light_matrices(const QString& file) {
+    controls_->set_method("custom");
+    if (!controls_->set_text_setting("matrices", file)) message("the custom method takes no matrices file", true);
+}
+
+void MainWindow::paste_light_matrices() {
+    if (!pasted_matrices_.isValid()) return message("no temporary directory to keep the pasted matrices in", true);
+    const QString path = pasted_matrices_.filePath(QString("pasted_%1.txt").arg(++pastes_));
+    std::ofstream out(path.toStdString());
+    out << QApplication::clipboard()->text().toStdString();
+    if (!out) return message("cannot write " + path, true);
+    out.close();
+    import_light_matrices(path);
 }
 
 void MainWindow::remember_recent(const QString& path) {

@@ -6,6 +6,7 @@
 // the Camera panel's shape, recomputed as the panel is resized.
 #include <optional>
 #include <QMainWindow>
+#include <QTemporaryDir>
 
 #include "io/matrix_export.hpp"
 #include "model/inspection.hpp"
@@ -27,9 +28,17 @@ class MainWindow : public QMainWindow {
 public:
     explicit MainWindow(QWidget* parent = nullptr);
 
-    // A scene JSON, or a mesh file (placed on a ground plane, with a camera and a sun). On failure
-    // the message names the file and the field, and the current scene stays.
+    // A scene JSON, a glTF scene (its own camera and light) or a mesh file (placed on a ground plane,
+    // with a camera and a sun). On failure the message names the file and the field, and the current
+    // scene stays.
     bool open_file(const QString& path);
+    // An engine's light matrices (GLSL, HLSL or JSON: core/io/matrix_import.hpp): the method becomes
+    // `custom` reading them (File ▸ Import light matrices). A file that cannot be read is named in
+    // the messages, and the inspection shown stays.
+    void import_light_matrices(const QString& file);
+    // The same from the clipboard's text (File ▸ Paste light matrices), kept in a file of the
+    // window's own for as long as it runs.
+    void paste_light_matrices();
 
     const Scene& scene() const { return scene_; }
     const Inspection* inspection() const { return inspection_ ? &*inspection_ : nullptr; }
@@ -66,6 +75,7 @@ private:
     void open_dialog();
     void export_view(ViewPanel* panel);
     void export_matrices(MatrixFormat format, bool to_clipboard);
+    void import_dialog();
     void remember_recent(const QString& path);
     void rebuild_recent_menu();
     void restore_settings();
@@ -82,6 +92,8 @@ private:
     QMenu* recent_menu_ = nullptr;
     QTimer* aspect_timer_;  // a resize recomputes once it settles, not on every step of a drag
     QString last_message_;
+    QTemporaryDir pasted_matrices_;  // the clipboard's light matrices, each paste a file of its own
+    int pastes_ = 0;
 };
 
 }  // namespace shadowlab
