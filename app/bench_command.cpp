@@ -87,7 +87,7 @@ void run_bench(const BenchOptions& o) {
     size_t total = 0, done = 0;
     for (const Method* m : methods) total += o.scene_files.size() * resolutions_of(m).size();
     for (const std::string& scene_file : o.scene_files) {
-        const MeasureContext context = prepare_with_progress(scene_file, o.scene_choice, o.width, o.height);
+        const MeasureContext context = prepare_with_progress(scene_file, o.scene_source, o.width, o.height);
         const std::string scene_name = std::filesystem::path(scene_file).stem().string();
         for (const Method* method : methods) {
             const Settings settings = resolve_settings(method->name, method->settings, {});

@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_loader.hpp"
+#include "scene_source.hpp"
 
 namespace shadowlab {
 
 struct BenchOptions {
     std::vector<std::string> scene_files;
-    SceneChoice scene_choice;          // which of each scene file's cameras and lights (a glTF file may hold several)
+    SceneSource scene_source;          // which of each scene file's cameras and lights, or an engine's camera
     std::vector<std::string> methods;  // empty: all
     std::vector<int> resolutions{256, 512, 1024, 2048, 4096};
     int width = 640, height = 360;

@@ -60,7 +60,7 @@ void run_filter_bench(const BenchOptions& o) {
     if (!csv) throw std::runtime_error((dir / "bench_filters.csv").string() + ": cannot write");
     csv << "method,filter,kernel_size,taps_per_pixel,visibility_rmse,visibility_mae,reference_noise,"
            "penumbra_width_ratio,light_bleeding,misclassified,prefilter_ms,lookup_ms,fallback\n";
-    const MeasureContext context = prepare_with_progress(o.scene_files.front(), o.scene_choice, o.width, o.height);
+    const MeasureContext context = prepare_with_progress(o.scene_files.front(), o.scene_source, o.width, o.height);
     const std::string reference =
         context.reference.light_samples > 0 ? "soft reference" : "hard reference: the light has no size";
     ChartSpec chart{

@@ -141,7 +141,7 @@ void inspect_technique(const InspectOptions& options, const Method& technique, c
 void run_inspect(const InspectOptions& options) {
     const Method& method = method_or_throw(options.method);
     const Settings settings = resolve_settings(method.name, method.settings, options.settings);
-    const Scene scene = load_scene(options.scene_file, options.scene_choice);
+    const Scene scene = load_scene_source(options.scene_file, options.scene_source);
     if (method.makes_maps())
         inspect_map(options, method, settings, scene);
     else

@@ -125,7 +125,7 @@ std::string page_head(const Inspection& in, const LessonOptions& o, MatrixLayout
 }
 
 Inspection inspect_for_lesson(const LessonOptions& o) {
-    const Scene scene = load_scene(o.scene_file, o.scene_choice);
+    const Scene scene = load_scene_source(o.scene_file, o.scene_source);
     const glm::ivec2 camera_image = image_size_within(scene.camera, o.width, o.height);
     return inspect_scene(scene, {.method = o.method,
                                  .settings = o.settings,

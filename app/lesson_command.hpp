@@ -8,13 +8,13 @@
 #include <map>
 #include <string>
 
-#include "scene/scene_loader.hpp"
+#include "scene_source.hpp"
 
 namespace shadowlab {
 
 struct LessonOptions {
     std::string scene_file;
-    SceneChoice scene_choice;  // which of the scene file's cameras and lights (a glTF file may hold several)
+    SceneSource scene_source;  // which of the scene file's cameras and lights, or an engine's camera
     std::string method = "lispsm";
     std::map<std::string, std::string> settings;
     int resolution = 1024;

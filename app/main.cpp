@@ -27,13 +27,14 @@ std::string default_scene() {
     return "data/scenes/default.json";
 }
 
-// "key=value" pairs into a map; throws CLI::ValidationError on a missing '='.
-std::map<std::string, std::string> parse_settings(const std::vector<std::string>& pairs) {
+// "key=value" pairs into a map; throws CLI::ValidationError, naming `option`, on a missing '='.
+std::map<std::string, std::string> parse_settings(const std::vector<std::string>& pairs,
+                                                  const std::string& option = "--set") {
     std::map<std::string, std::string> out;
     for (const std::string& pair : pairs) {
         const auto eq = pair.find('=');
         if (eq == std::string::npos || eq == 0)
-            throw CLI::ValidationError("--set", "expected key=value, got '" + pair + "'");
+            throw CLI::ValidationError(option, "expected key=value, got '" + pair + "'");
         out[pair.substr(0, eq)] = pair.substr(eq + 1);
     }
     return out;
@@ -46,14 +47,32 @@ void parse_size(const std::string& text, int& width, int& height) {
         throw CLI::ValidationError("--size", "expected WxH, got '" + text + "'");
 }
 
-// Which of a scene file's cameras and lights the command takes (a glTF file may hold several).
-void add_scene_choice(CLI::App* command, shadowlab::SceneChoice& choice) {
-    command->add_option("--camera-index", choice.camera, "the scene file's camera to take, 0-based (glTF: cameras[N])")
+// Which of a scene file's cameras and lights the command takes (a glTF file may hold several), or
+// an engine's camera in place of the file's.
+void add_scene_source(CLI::App* command, shadowlab::SceneSource& source) {
+    command
+        ->add_option("--camera-index", source.choice.camera,
+                     "the scene file's camera to take, 0-based (glTF: cameras[N])")
         ->capture_default_str();
     command
-        ->add_option("--light-index", choice.light,
+        ->add_option("--light-index", source.choice.light,
                      "the scene file's light to take, 0-based (glTF: KHR_lights_punctual's lights[N])")
         ->capture_default_str();
+    CLI::Option* matrices = command->add_option(
+        "--camera-matrices", source.camera_matrices,
+        "an engine's camera replacing the scene's: its view and projection matrices in a GLSL, HLSL or JSON file "
+        "(README: Debugging your engine)");
+    command
+        ->add_option_function<std::vector<std::string>>(
+            "--camera-conventions",
+            [&source](const std::vector<std::string>& pairs) {
+                source.camera_conventions = parse_settings(pairs, "--camera-conventions");
+            },
+            "the matrices' conventions, key=value,...: storage (auto | column_major | row_major), clip_depth "
+            "(minus_one_to_one | zero_to_one), reversed_z (off | on), clip_y (up | down: Vulkan), looks_along "
+            "(minus_z | plus_z: Direct3D)")
+        ->delimiter(',')
+        ->needs(matrices);
 }
 
 }  // namespace
@@ -68,7 +87,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> set_pairs;
     CLI::App* inspect_cmd = app.add_subcommand("inspect", "print a method's steps, matrices and fallbacks for a scene");
     inspect_cmd->add_option("scene", inspect.scene_file, scene_help)->required();
-    add_scene_choice(inspect_cmd, inspect.scene_choice);
+    add_scene_source(inspect_cmd, inspect.scene_source);
     inspect_cmd->add_option("--method,-m", inspect.method, method_help)->capture_default_str();
     inspect_cmd->add_option("--set", set_pairs, "a method setting, key=value (repeatable)");
     inspect_cmd->add_flag("--json", inspect.json, "print one JSON object instead of text");
@@ -78,7 +97,7 @@ int main(int argc, char** argv) {
     std::string size = "1280x720";
     CLI::App* measure_cmd = app.add_subcommand("measure", "a method's error against the exact reference, and its cost");
     measure_cmd->add_option("scene", measure.scene_file, scene_help)->required();
-    add_scene_choice(measure_cmd, measure.scene_choice);
+    add_scene_source(measure_cmd, measure.scene_source);
     measure_cmd->add_option("--method,-m", measure.method, method_help)->capture_default_str();
     measure_cmd->add_option("--resolution,-r", measure.resolution, "shadow map resolution (texels per side)")->capture_default_str();
     measure_cmd->add_option("--size", size, "camera image size WxH")->capture_default_str();
@@ -91,7 +110,7 @@ int main(int argc, char** argv) {
     CLI::App* bench_cmd = app.add_subcommand("bench", "every method at every resolution: a CSV and a plot of error against cost");
     bench_cmd->add_option("scenes", bench.scene_files, "scene files: JSON, glTF (.gltf, .glb) or meshes alone")
         ->required();
-    add_scene_choice(bench_cmd, bench.scene_choice);
+    add_scene_source(bench_cmd, bench.scene_source);
     bench_cmd->add_option("--methods", bench.methods, "methods, comma-separated (default: all)")->delimiter(',');
     bench_cmd->add_option("--resolutions", bench.resolutions, "map resolutions, comma-separated")->delimiter(',')->capture_default_str();
     bench_cmd->add_option("--size", bench_size, "camera image size WxH")->capture_default_str();
@@ -106,7 +125,7 @@ int main(int argc, char** argv) {
                                              "light from perpendicular to parallel with the view, and far/near from 10 "
                                              "to 1e7; or, with --bias, a depth bias");
     sweep_cmd->add_option("scene", sweep.scene_file, scene_help)->required();
-    add_scene_choice(sweep_cmd, sweep.scene_choice);
+    add_scene_source(sweep_cmd, sweep.scene_source);
     sweep_cmd->add_option("--methods", sweep.methods, "methods, comma-separated (default: all)")->delimiter(',');
     sweep_cmd->add_option("--resolution,-r", sweep.resolution, "map resolution")->capture_default_str();
     sweep_cmd->add_option("--size", sweep_size, "camera image size WxH")->capture_default_str();
@@ -127,7 +146,7 @@ int main(int argc, char** argv) {
     std::string render_size = "1280x720";
     CLI::App* render_cmd = app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
     render_cmd->add_option("scene", render.scene_file, scene_help)->required();
-    add_scene_choice(render_cmd, render.scene_choice);
+    add_scene_source(render_cmd, render.scene_source);
     render_cmd->add_option("--method,-m", render.method, method_help)->capture_default_str();
     render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | texels | error | stencil")->capture_default_str();
     render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
@@ -166,7 +185,7 @@ int main(int argc, char** argv) {
     CLI::App* lesson_cmd = app.add_subcommand(
         "lesson", "a course page: every step's formula, values and pictures as HTML and PNGs (needs X: xvfb-run)");
     lesson_cmd->add_option("scene", lesson.scene_file, scene_help)->required();
-    add_scene_choice(lesson_cmd, lesson.scene_choice);
+    add_scene_source(lesson_cmd, lesson.scene_source);
     lesson_cmd->add_option("--method,-m", lesson.method, method_help)->capture_default_str();
     lesson_cmd->add_option("--set", lesson_pairs, "a method setting, key=value (repeatable)");
     lesson_cmd->add_option("--resolution,-r", lesson.resolution, "shadow map resolution")->capture_default_str();
@@ -180,7 +199,7 @@ int main(int argc, char** argv) {
     CLI::App* shimmer_cmd = app.add_subcommand(
         "shimmer", "the camera moved along a path: how often fixed points' shadow verdicts flip between frames");
     shimmer_cmd->add_option("scene", shimmer.scene_file, scene_help)->required();
-    add_scene_choice(shimmer_cmd, shimmer.scene_choice);
+    add_scene_source(shimmer_cmd, shimmer.scene_source);
     shimmer_cmd->add_option("--method,-m", shimmer.method, method_help)->capture_default_str();
     shimmer_cmd->add_option("--set", shimmer_pairs, "a method setting, key=value (repeatable)");
     shimmer_cmd->add_option("--path", shimmer.path, "translate (sideways) | rotate (on the spot) | dolly (forward)")

@@ -172,10 +172,10 @@ std::vector<const Method*> methods_named(const std::vector<std::string>& names) 
     return methods;
 }
 
-MeasureContext prepare_with_progress(const std::string& scene_file, const SceneChoice& choice, int width, int height) {
+MeasureContext prepare_with_progress(const std::string& scene_file, const SceneSource& source, int width, int height) {
     limits::check(limits::image_side, "--size width", width);
     limits::check(limits::image_side, "--size height", height);
-    const Scene scene = load_scene(scene_file, choice);
+    const Scene scene = load_scene_source(scene_file, source);
     const glm::ivec2 image = image_size_within(scene.camera, width, height);
     std::cerr << "measure: exact reference of " << scene_file << " (" << image.x << "x" << image.y;
     if (image != glm::ivec2(width, height))
@@ -198,7 +198,7 @@ void run_measure(const MeasureOptions& o) {
     const Method& method = method_or_throw(o.method);
     limits::check(limits::map_resolution, "--resolution", o.resolution);
     const Settings settings = resolve_settings(method.name, method.settings, o.settings);
-    const MeasureContext context = prepare_with_progress(o.scene_file, o.scene_choice, o.width, o.height);
+    const MeasureContext context = prepare_with_progress(o.scene_file, o.scene_source, o.width, o.height);
     std::cerr << "measure: " << method.name;
     if (method.makes_maps()) std::cerr << " at " << o.resolution << "^2";
     std::cerr << "...\n";

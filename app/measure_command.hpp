@@ -7,13 +7,13 @@
 #include "io/inspection_json.hpp"
 #include "metrics/measurement.hpp"
 #include "plot/chart_png.hpp"
-#include "scene/scene_loader.hpp"
+#include "scene_source.hpp"
 
 namespace shadowlab {
 
 struct MeasureOptions {
     std::string scene_file;
-    SceneChoice scene_choice;  // which of the scene file's cameras and lights (a glTF file may hold several)
+    SceneSource scene_source;  // which of the scene file's cameras and lights, or an engine's camera
     std::string method = "focused";
     std::map<std::string, std::string> settings;
     int resolution = 1024;
@@ -31,7 +31,7 @@ void run_measure(const MeasureOptions& options);
 Json to_json(const Measurement& measurement);
 // The named methods, or every method of the registry when `names` is empty.
 std::vector<const Method*> methods_named(const std::vector<std::string>& names);
-MeasureContext prepare_with_progress(const std::string& scene_file, const SceneChoice& choice, int width, int height);
+MeasureContext prepare_with_progress(const std::string& scene_file, const SceneSource& source, int width, int height);
 // One plotted point of a measurement: misclassified share in %, marked when a fallback was taken
 // (a map) or a limit met (a technique).
 void add_error_point(ChartSeries& series, double x, const Measurement& measurement);

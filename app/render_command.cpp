@@ -90,7 +90,7 @@ void run_render(const RenderOptions& options) {
     const TextureShown texture = texture_or_throw(options.texture);
     const SpacePreset preset = preset_or_throw(options.preset);
     const MapOverlay overlay = overlay_or_throw(options.overlay);
-    Scene scene = load_scene(options.scene_file, options.scene_choice);
+    Scene scene = load_scene_source(options.scene_file, options.scene_source);
     turn_light(scene, options.light);
     // The camera keeps its aspect: its image is the largest of that shape within --size; the Camera
     // view is drawn at that size, the other views fill --size (their images are letterboxed).

@@ -37,7 +37,8 @@ void run_shimmer(const ShimmerOptions& o) {
     if (!method.makes_maps())
         throw std::invalid_argument("--method: " + method.name + " is a geometric technique: it has no map to shimmer");
     const Settings settings = resolve_settings(method.name, method.settings, o.settings);
-    const MeasureContext context = prepare_measurement(load_scene(o.scene_file, o.scene_choice), o.width, o.height);
+    const MeasureContext context =
+        prepare_measurement(load_scene_source(o.scene_file, o.scene_source), o.width, o.height);
     const std::vector<ShimmerSample> samples = shimmer_samples(context);
     std::cerr << "shimmer: " << method.name << ", " << samples.size() << " fixed receiver points, " << path.frames
               << " frames, " << to_string(path.kind) << " by " << step_per_frame(path, context.scene.camera)

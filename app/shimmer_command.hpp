@@ -7,13 +7,13 @@
 #include <map>
 #include <string>
 
-#include "scene/scene_loader.hpp"
+#include "scene_source.hpp"
 
 namespace shadowlab {
 
 struct ShimmerOptions {
     std::string scene_file;
-    SceneChoice scene_choice;  // which of the scene file's cameras and lights (a glTF file may hold several)
+    SceneSource scene_source;  // which of the scene file's cameras and lights, or an engine's camera
     std::string method = "focused";
     std::map<std::string, std::string> settings;
     std::string path = "translate";

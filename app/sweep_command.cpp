@@ -100,7 +100,7 @@ std::string bias_chart_title(const BiasCurve& curve, int resolution) {
 
 void run_bias_sweep(const SweepOptions& o) {
     const std::vector<const Method*> methods = with_maps(methods_named(o.methods));
-    const MeasureContext context = prepare_with_progress(o.scene_file, o.scene_choice, o.width, o.height);
+    const MeasureContext context = prepare_with_progress(o.scene_file, o.scene_source, o.width, o.height);
     const std::vector<double> values = default_bias_values(context, o.bias_setting, o.resolution);
     std::vector<BiasCurve> curves;
     for (const Method* method : methods) {
@@ -126,7 +126,7 @@ void run_sweep(const SweepOptions& o) {
     limits::check(limits::map_resolution, "--resolution", o.resolution);
     if (o.bias) return run_bias_sweep(o);
     const std::vector<const Method*> methods = methods_named(o.methods);
-    const Scene base = load_scene(o.scene_file, o.scene_choice);
+    const Scene base = load_scene_source(o.scene_file, o.scene_source);
     std::filesystem::create_directories(o.out_dir);
     const std::filesystem::path dir(o.out_dir);
     std::ofstream csv(dir / "sweep.csv");

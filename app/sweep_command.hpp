@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_loader.hpp"
+#include "scene_source.hpp"
 
 namespace shadowlab {
 
 struct SweepOptions {
     std::string scene_file;
-    SceneChoice scene_choice;          // which of the scene file's cameras and lights (a glTF file may hold several)
+    SceneSource scene_source;          // which of the scene file's cameras and lights, or an engine's camera
     std::vector<std::string> methods;  // empty: all
     int resolution = 1024;
     int width = 480, height = 270;

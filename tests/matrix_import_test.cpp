@@ -317,7 +317,7 @@ TEST(MatrixImport, MalformedTextIsRefusedWithTheReason) {
              {"{\"matrices\": [[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, NaN]]]}", "malformed JSON"},
              {"{\"matrices\": [[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, \"1\"]]]}",
               "matrices[0][3]: expected finite numbers"},
-             {"{\"matrices\": [], \"camera\": {}}", "camera: unknown key"},
+             {"{\"matrices\": [], \"lens\": {}}", "lens: unknown key"},
              {"{\"matrices\": []}", "matrices: expected an array of one or more matrices"},
              {"{\"matrices\": [[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]], \"tiles\": [[0, 0, 2, 1]]}",
               "tiles[0]: expected [u0, v0, u1, v1]"},

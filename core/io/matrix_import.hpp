@@ -6,20 +6,15 @@
 // The JSON schema:
 //   {"matrices": [M, ...],               one or more, each 16 numbers or 4 arrays of 4
 //    "tiles": [[u0, v0, u1, v1], ...],   one per matrix: its tile in the engine's texture (needed for several)
-//    "split_depths": [d0, ..., dn]}      optional, matrices + 1 increasing view depths: cascades
+//    "split_depths": [d0, ..., dn],      optional, matrices + 1 increasing view depths: cascades
+//    "camera": {...}}                    passed over: the engine's camera (camera_import.hpp) may share the file
 #include <string>
 #include <vector>
 #include <glm/glm.hpp>
 
-namespace shadowlab {
+#include "io/matrix_text.hpp"
 
-// How a matrix's 16 numbers are laid out, in reading order.
-enum class MatrixStorage {
-    automatic,     // as the text's language builds it: GLSL's mat4(...) by columns, HLSL's {...} by rows,
-                   // JSON's 4 arrays of 4 by rows (as ShadowLab prints); 16 JSON numbers in a row must say
-    column_major,  // the first four numbers are column 0: an OpenGL or GLM matrix in memory
-    row_major,     // the first four numbers are row 0, of the matrix applied to column vectors (M p)
-};
+namespace shadowlab {
 
 struct EngineMatrices {
     std::vector<glm::dmat4> clip_from_world;  // the light view-projections, applied as M p
@@ -30,7 +25,7 @@ struct EngineMatrices {
 // The matrices `text` holds: JSON when it starts with '{', else every GLSL mat4 / dmat4 constructor,
 // else every HLSL float4x4 / double4x4 initializer. Throws std::invalid_argument, one line naming
 // `file`, the matrix (or JSON field) and what is wrong: a count other than 16, a word or a
-// non-finite number, a singular matrix, several matrices without tiles.
+// non-finite number, a singular matrix, several matrices without tiles (io/matrix_text.hpp reads them).
 EngineMatrices parse_engine_matrices(const std::string& text, MatrixStorage storage, const std::string& file);
 // The same, read from a file.
 EngineMatrices read_engine_matrices(const std::string& file, MatrixStorage storage);

@@ -4,6 +4,7 @@
 // apply to them as to ShadowLab's own.
 #include "methods/custom.hpp"
 
+#include "io/engine_conventions.hpp"
 #include "io/matrix_import.hpp"
 #include "maps/clip_conventions.hpp"
 #include "methods/focused.hpp"
@@ -16,15 +17,9 @@
 namespace shadowlab {
 namespace {
 
-MatrixStorage storage_of(const Settings& s) {
-    const std::string& storage = s.choice("storage");
-    if (storage == "column_major") return MatrixStorage::column_major;
-    return storage == "row_major" ? MatrixStorage::row_major : MatrixStorage::automatic;
-}
-
 ClipConventions conventions_of(const Settings& s) {
-    return {.depth = s.choice("clip_depth") == "zero_to_one" ? ClipDepth::zero_to_one : ClipDepth::minus_one_to_one,
-            .reversed_z = s.choice("reversed_z") == "on",
+    return {.depth = clip_depth_of(s),
+            .reversed_z = reversed_z_of(s),
             .v = s.choice("v_direction") == "down" ? TextureV::down : TextureV::up};
 }
 
@@ -103,19 +98,9 @@ std::vector<SettingSpec> custom_settings() {
                         "engine)",
          .default_value = "",
          .is_text = true},
-        {.name = "storage",
-         .description = "each matrix's 16 numbers: auto (GLSL's mat4 by columns, HLSL's float4x4 and JSON's rows "
-                        "by rows), column_major or row_major",
-         .default_value = "auto",
-         .choices = {"auto", "column_major", "row_major"}},
-        {.name = "clip_depth",
-         .description = "the engine's clip depth z / w: minus_one_to_one (OpenGL) or zero_to_one (Direct3D, Vulkan)",
-         .default_value = "minus_one_to_one",
-         .choices = {"minus_one_to_one", "zero_to_one"}},
-        {.name = "reversed_z",
-         .description = "on: z / w is 1 at the near plane and falls toward the far one",
-         .default_value = "off",
-         .choices = {"off", "on"}},
+        storage_setting(),
+        clip_depth_setting(),
+        reversed_z_setting(),
         {.name = "v_direction",
          .description = "the texture's v: up, v = (1 + y) / 2 (OpenGL, Vulkan), or down, v = (1 - y) / 2 (Direct3D)",
          .default_value = "up",

@@ -25,6 +25,7 @@
 #include "math/normalize.hpp"
 #include "scene/mesh_scene.hpp"
 #include "scene/scene_error.hpp"
+#include "scene/scene_loader.hpp"
 #include "scene/triangle_mesh.hpp"
 
 namespace shadowlab {
@@ -195,6 +196,51 @@ const json& lights_of(const GltfFields& fields, const json& root) {
     return punctual ? fields.array(*punctual, "extensions.KHR_lights_punctual", "lights") : GltfFields::no_items();
 }
 
+const json& nodes_of(const GltfFields& fields, const json& root) { return fields.array(root, "", "nodes"); }
+
+std::optional<std::size_t> camera_held(const GltfFields& fields, const json& root, const json& node,
+                                       const std::string& path) {
+    return fields.index(node, path, "camera", cameras_of(fields, root).size());
+}
+
+std::optional<std::size_t> light_held(const GltfFields& fields, const json& root, const json& node,
+                                      const std::string& path) {
+    const json* punctual = fields.nested(node, path, {"extensions", "KHR_lights_punctual"});
+    return punctual ? fields.index(*punctual, path + ".extensions.KHR_lights_punctual", "light",
+                                   lights_of(fields, root).size())
+                    : std::nullopt;
+}
+
+// ---- what the file offers ----------------------------------------------------------------------
+
+std::string optional_text(const GltfFields& fields, const json& object, const std::string& path, const char* key) {
+    return fields.member(object, path, key) ? fields.text(object, path, key) : std::string();
+}
+
+// Each camera or light of `items` (at `items_path`; `held` gives the one a node holds) by its type and
+// its own name, else that of the first node in the file's order holding it.
+template <class Held>
+std::vector<GltfItem> offered(const GltfFields& fields, const json& root, const json& items,
+                              const std::string& items_path, Held held) {
+    std::vector<GltfItem> out;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const std::string path = indexed(items_path, i);
+        GltfItem item{.name = optional_text(fields, items[i], path, "name"),
+                      .type = fields.text(items[i], path, "type")};
+        const json& nodes = nodes_of(fields, root);
+        for (std::size_t node = 0; node < nodes.size() && item.name.empty(); ++node)
+            if (held(fields, root, nodes[node], indexed("nodes", node)) == i)
+                item.name = optional_text(fields, nodes[node], indexed("nodes", node), "name");
+        out.push_back(std::move(item));
+    }
+    return out;
+}
+
+GltfContents contents_of(const GltfFields& fields, const json& root) {
+    return {.cameras = offered(fields, root, cameras_of(fields, root), "cameras", camera_held),
+            .lights = offered(fields, root, lights_of(fields, root), kLightsPath, light_held)};
+}
+
 // ---- nodes: where the cameras and lights stand ----------------------------------------------
 
 // For each camera and light, the world transform of the first node holding it, depth first from the
@@ -229,9 +275,9 @@ public:
                 fields_.fail(path, "reached twice: a glTF node has one parent and is not its own ancestor");
             reached[node] = true;
             const glm::dmat4 world_from_node = world_from_parent * parent_from_node(nodes()[node], path);
-            if (const auto camera = fields_.index(nodes()[node], path, "camera", cameras_of(fields_, root_).size()))
+            if (const auto camera = camera_held(fields_, root_, nodes()[node], path))
                 placements.world_from_camera.try_emplace(*camera, world_from_node);
-            if (const auto light = light_of(nodes()[node], path))
+            if (const auto light = light_held(fields_, root_, nodes()[node], path))
                 placements.world_from_light.try_emplace(*light, world_from_node);
             const json& children = fields_.array(nodes()[node], path, "children");
             for (std::size_t i = children.size(); i-- > 0;)
@@ -242,7 +288,7 @@ public:
     }
 
 private:
-    const json& nodes() const { return fields_.array(root_, "", "nodes"); }
+    const json& nodes() const { return nodes_of(fields_, root_); }
 
     // glTF 2.0, "Transformations": a column-major `matrix`, or T * R * S from `translation`,
     // `rotation` (a unit quaternion, x, y, z, w) and `scale`.
@@ -260,13 +306,6 @@ private:
         if (const std::vector<double> s = fields_.numbers(node, path, "scale", 3); !s.empty())
             transform = glm::scale(transform, glm::dvec3(s[0], s[1], s[2]));
         return transform;
-    }
-
-    std::optional<std::size_t> light_of(const json& node, const std::string& path) const {
-        const json* punctual = fields_.nested(node, path, {"extensions", "KHR_lights_punctual"});
-        return punctual ? fields_.index(*punctual, path + ".extensions.KHR_lights_punctual", "light",
-                                        lights_of(fields_, root_).size())
-                        : std::nullopt;
     }
 
     const GltfFields& fields_;
@@ -469,20 +508,30 @@ bool is_gltf_file(const std::string& file) {
     return extension == ".gltf" || extension == ".glb";
 }
 
-void check_choice(const std::string& file, const std::string& what, std::size_t index, std::size_t count) {
+void check_choice(const std::string& file, const std::string& json_path, const std::string& what, std::size_t index,
+                  std::size_t count, const std::string& holder) {
     if (index < count) return;
     const std::string held = count == 1
                                  ? "one " + what + " (0)"
                                  : std::to_string(count) + " " + what + "s (0 … " + std::to_string(count - 1) + ")";
-    throw SceneError(file, "", what + " " + std::to_string(index) + " asked for, but the file holds " + held);
+    throw SceneError(file, json_path,
+                     what + " " + std::to_string(index) + " asked for, but " + holder + " holds " + held);
 }
 
+GltfContents gltf_contents(const std::string& file) { return contents_of(GltfFields(file), gltf_json(file)); }
+
 GltfScene read_gltf_scene(const std::string& file, const SceneChoice& choice) {
+    GltfScene out = read_gltf_scene_unvalidated(file, choice);
+    validate_scene(out.scene);
+    return out;
+}
+
+GltfScene read_gltf_scene_unvalidated(const std::string& file, const SceneChoice& choice) {
     const json root = gltf_json(file);
     const GltfFields fields(file);
-    // A file without cameras or lights gets the default of each: it holds one.
-    check_choice(file, "camera", choice.camera, std::max<std::size_t>(cameras_of(fields, root).size(), 1));
-    check_choice(file, "light", choice.light, std::max<std::size_t>(lights_of(fields, root).size(), 1));
+    const GltfContents contents = contents_of(fields, root);
+    check_choice(file, "", "camera", choice.camera, contents.camera_choices(), "the file");
+    check_choice(file, "", "light", choice.light, contents.light_choices(), "the file");
     const Placements placements = NodeWalk(fields, root).place();
     GltfScene out;
     const ChosenParts chosen(fields, root, placements, out.defaulted);
@@ -497,7 +546,6 @@ GltfScene read_gltf_scene(const std::string& file, const SceneChoice& choice) {
     scene.camera = lens ? placed_camera(*lens, meshes, out.defaulted) : camera_framing(meshes);
     if (cameras_of(fields, root).empty()) scene.objects.insert(scene.objects.begin(), ground_under(meshes));
     scene.light = light.value_or(sun_from_above());
-    validate_scene(scene);
     return out;
 }
 

@@ -19,6 +19,13 @@
 //      "size": [x,y,z] (box) or [x,z] (plane), "radius": r (sphere, cylinder),
 //      "height": h (cylinder), "file": "path relative to the scene file" (mesh, required)}]}
 //
+// Or a glTF scene referenced (gltf_reference), told apart by its "gltf" key:
+//
+// { "name": "<the glTF file's stem>", "description": "...",
+//   "gltf": "path relative to the scene file",                   // required
+//   "camera": 0, "light": 0,                                     // which of the file's, 0-based
+//   "objects": {"<object name>": {"casts": true, "receives": true}}}
+//
 // Numeric rules (validate_scene; the ranges are limits.hpp's): all numbers finite; positions
 // within ±1e12, and so every corner of a placed object; sizes, radius, height, near and far in
 // [1e-6, 1e12]; scale in [1e-6, 1e6]; aspect in [1e-3, 1e3]; near < far <= 1e9 near; fov_y_deg and
@@ -225,6 +232,21 @@ public:
         return scene;
     }
 
+    GltfReference read_reference(const json& root) const {
+        check_keys(root, "", {"name", "description", "gltf", "camera", "light", "objects"},
+                   "a scene referencing a glTF file");
+        GltfReference reference;
+        std::string description, gltf_file;  // description: documentation only
+        read_field(root, "", "name", reference.name);
+        read_field(root, "", "description", description);
+        read_field(root, "", "gltf", gltf_file);
+        reference.gltf_file = relative_to_scene(gltf_file);
+        read_field(root, "", "camera", reference.choice.camera);
+        read_field(root, "", "light", reference.choice.light);
+        if (const json* objects = find_field(root, "objects")) reference.roles = read_roles(*objects);
+        return reference;
+    }
+
 private:
     [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
         throw SceneError(file_, path, problem);
@@ -261,6 +283,10 @@ private:
     void parse(const json& value, const std::string& path, bool& out) const {
         expect(value.is_boolean(), path, "true or false", value);
         out = value.get<bool>();
+    }
+    void parse(const json& value, const std::string& path, std::size_t& out) const {
+        expect(value.is_number_unsigned(), path, "an index: 0, 1, ...", value);
+        out = value.get<std::size_t>();
     }
     void parse(const json& value, const std::string& path, std::string& out) const {
         expect(value.is_string(), path, "a string", value);
@@ -331,6 +357,25 @@ private:
             light.range = LightRange{.near = near_far[0], .far = near_far[1]};
         }
         return light;
+    }
+
+    std::string relative_to_scene(const std::string& file) const {
+        const std::filesystem::path path(file);
+        return path.is_absolute() ? file
+                                  : (std::filesystem::path(file_).parent_path() / path).lexically_normal().string();
+    }
+
+    std::map<std::string, ObjectRoles> read_roles(const json& value) const {
+        expect(value.is_object(), "objects", "an object of object names and their roles", value);
+        std::map<std::string, ObjectRoles> roles;
+        for (const auto& [name, named] : value.items()) {
+            const std::string path = join_path("objects", name);
+            expect_object(named, path);
+            check_keys(named, path, {"casts", "receives"}, "an object's roles");
+            read_field(named, path, "casts", roles[name].casts);
+            read_field(named, path, "receives", roles[name].receives);
+        }
+        return roles;
     }
 
     std::vector<SceneObject> read_objects(const json& value) {
@@ -578,32 +623,54 @@ private:
     const std::string& file_;
 };
 
-}  // namespace
+// The scene, what the glTF file lacks said on stderr.
+Scene told(GltfScene gltf, const std::string& gltf_file) {
+    for (const std::string& assumed : gltf.defaulted) std::clog << gltf_file << ": " << assumed << "\n";
+    return std::move(gltf.scene);
+}
 
-Scene load_scene(const std::string& path, const SceneChoice& choice) {
-    if (is_gltf_file(path)) {
-        GltfScene gltf = read_gltf_scene(path, choice);
-        for (const std::string& assumed : gltf.defaulted) std::clog << path << ": " << assumed << "\n";
-        return std::move(gltf.scene);
-    }
-    check_choice(path, "camera", choice.camera, 1);  // a scene JSON or a lone mesh holds one of each
-    check_choice(path, "light", choice.light, 1);
-    if (is_mesh_file(path)) return scene_around_mesh(path);
+bool references_gltf(const json& root) { return root.is_object() && root.contains("gltf"); }
+
+std::string file_text(const std::string& path) {
     std::error_code error;
     std::ifstream in(path, std::ios::binary);
     if (!std::filesystem::is_regular_file(path, error) || !in)
         throw SceneError(path, "", "cannot open file");
     std::ostringstream text;
     text << in.rdbuf();
-    return parse_scene(text.str(), path);
+    return text.str();
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const SceneChoice& choice) {
+    if (is_gltf_file(path)) return told(read_gltf_scene(path, choice), path);
+    // A scene JSON or a lone mesh holds one of each; a JSON referencing a glTF scene has chosen.
+    check_choice(path, "", "camera", choice.camera, 1, "the file");
+    check_choice(path, "", "light", choice.light, 1, "the file");
+    if (is_mesh_file(path)) return scene_around_mesh(path);
+    return parse_scene(file_text(path), path);
 }
 
 Scene parse_scene(const std::string& json_text, const std::string& file) {
-    Scene scene = SceneReader(file).read(parse_json(json_text, file));
+    const json root = parse_json(json_text, file);
+    if (references_gltf(root)) {
+        const GltfReference reference = SceneReader(file).read_reference(root);
+        return told(referenced_scene(reference, file), reference.gltf_file);
+    }
+    Scene scene = SceneReader(file).read(root);
     validate_scene(scene);
     scene.light.direction = normalize_safely(scene.light.direction);
     scene.camera.up = normalize_safely(scene.camera.up);
     return scene;
+}
+
+std::optional<GltfReference> gltf_reference_of(const std::string& path, const SceneChoice& choice) {
+    if (is_gltf_file(path)) return GltfReference{.gltf_file = path, .choice = choice, .roles = {}, .name = {}};
+    if (is_mesh_file(path)) return std::nullopt;
+    const json root = parse_json(file_text(path), path);
+    if (!references_gltf(root)) return std::nullopt;
+    return SceneReader(path).read_reference(root);
 }
 
 void validate_scene(const Scene& scene) { SceneValidator(scene.source_file).check(scene); }

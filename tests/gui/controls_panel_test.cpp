@@ -12,6 +12,7 @@
 #include <QtTest>
 
 #include "qt_test_main.hpp"
+#include "settled.hpp"
 #include "gui/controls_panel.hpp"
 #include "gui/main_window.hpp"
 
@@ -102,12 +103,12 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         QVERIFY(window.open_file(QString(SHADOWLAB_SOURCE_DIR) + "/data/scenes/box_on_plane.json"));
         window.controls()->findChild<QComboBox*>("filter")->setCurrentText("pcf");
-        QApplication::processEvents();
+        QVERIFY(testing::settled(window));
         QCOMPARE(QString(to_string(window.inspection()->lookup.filter.kind)), QString("pcf"));
         auto* kernel = window.controls()->findChild<QDoubleSpinBox*>("kernel_size");
         kernel->setValue(2.5);
         emit kernel->editingFinished();
-        QApplication::processEvents();
+        QVERIFY(testing::settled(window));
         QVERIFY2(window.last_message().contains("kernel_size"), qPrintable(window.last_message()));
         QCOMPARE(window.inspection()->lookup.filter.kernel_size, 3);
     }

@@ -30,10 +30,14 @@
 #include <vtkRendererCollection.h>
 
 #include "qt_test_main.hpp"
+#include "settled.hpp"
+#include "gltf_support.hpp"
+#include "scene/scene_loader.hpp"
 #include "gui/camera_pose.hpp"
 #include "gui/controls_panel.hpp"
 #include "gui/main_window.hpp"
 #include "gui/plot_panel.hpp"
+#include "gui/scene_panel.hpp"
 #include "plot/shimmer_chart.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
@@ -42,6 +46,7 @@
 #include "math/matrix.hpp"
 
 using namespace shadowlab;
+using shadowlab::testing::settled;
 
 namespace {
 
@@ -154,7 +159,7 @@ private slots:
         window_->show();
         QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
         QVERIFY(window_->open_file(source("data/scenes/box_on_plane.json")));
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
     }
     void cleanup() { window_.reset(); }
 
@@ -165,7 +170,7 @@ private slots:
         const RgbImage light_before = light->grab(), map_before = map->grab();
         QComboBox* selector = window_->controls()->method_selector();
         selector->setCurrentIndex(selector->findData("lispsm"));
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QCOMPARE(QString::fromStdString(window_->inspection()->method->name), QString("lispsm"));
         QVERIFY2(changed_share(light_before, light->grab()) > 0.01, "the Light space view did not change");
         QVERIFY2(changed_share(map_before, map->grab()) > 0.05, "the Shadow map view did not change");
@@ -173,15 +178,13 @@ private slots:
     }
 
     void aBadFileIsReportedAndTheSceneStays() {
-        ViewPanel* camera = panel_showing(ViewKind::camera);
-        const RgbImage before = camera->grab();
+        const Inspection* shown = window_->inspection();
         QVERIFY(!window_->open_file(source("tests/data/bad/negative_size.json")));
         QVERIFY2(window_->last_message().contains("negative_size.json"), qPrintable(window_->last_message()));
         QVERIFY2(window_->last_message().contains("objects[1].size"), qPrintable(window_->last_message()));
         QCOMPARE(QString::fromStdString(window_->scene().name), QString("box_on_plane"));
-        QVERIFY(window_->inspection() != nullptr);
-        QApplication::processEvents();
-        QVERIFY2(changed_share(before, camera->grab()) < 0.001, "the Camera view changed after a failed open");
+        QVERIFY(settled(*window_));
+        QVERIFY2(window_->inspection() == shown, "the views were given another inspection after a failed open");
     }
 
     void methodAndViewsAreRememberedBetweenRuns() {
@@ -205,7 +208,7 @@ private slots:
         ViewPanel* camera = panel_showing(ViewKind::camera);
         const RgbImage before = camera->grab();
         emit world->lightHandleMoved({30.0, 8.0, 0.0});  // dropped low on +x: the light now runs toward -x
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         const glm::dvec3 d = window_->scene().light.direction;
         QVERIFY2(d.x < -0.9 && d.y < 0.0, qPrintable(QString("light direction %1 %2 %3").arg(d.x).arg(d.y).arg(d.z)));
         QVERIFY2(changed_share(before, camera->grab()) > 0.01, "the shadows did not move");
@@ -215,29 +218,29 @@ private slots:
     // shadow, z-pass and z-fail give clearly different pictures (z-pass inverts the shadows).
     void volumesDrawStencilShadowsAndTheCameraInShadowBreaksZPass() {
         QVERIFY(window_->open_file(source("data/scenes/volumes.json")));
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         ViewPanel* camera = panel_showing(ViewKind::camera);
         const RgbImage map_image = camera->grab();
         const glm::dvec3 outside = window_->scene().camera.position;
         QComboBox* selector = window_->controls()->method_selector();
         selector->setCurrentIndex(selector->findData("volumes"));
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY(window_->inspection()->geometry.has_value());
         QVERIFY2(changed_share(map_image, camera->grab()) > 0.0005, "the Camera view did not change for volumes");
         auto* inside = window_->controls()->findChild<QCheckBox*>("cameraInShadow");
         QVERIFY(inside);
         inside->setChecked(true);
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY(window_->scene().camera.position != outside);
         const RgbImage zfail = camera->grab();
         auto* count = window_->controls()->findChild<QComboBox*>("count");
         QVERIFY(count);
         count->setCurrentText("zpass");
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         const double differ = changed_share_in_picture(zfail, camera->grab());
         QVERIFY2(differ > 0.2, qPrintable(QString("z-pass and z-fail differ at only %1 of the pixels").arg(differ)));
         inside->setChecked(false);
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY(window_->scene().camera.position == outside);
     }
 
@@ -249,11 +252,11 @@ private slots:
         for (int m = 0; m < selector->count(); ++m) {
             if (selector->itemData(m).toString().isEmpty()) continue;  // the separator
             selector->setCurrentIndex(m);
-            QApplication::processEvents();
+            QVERIFY(settled(*window_));
             for (ViewKind view : all_views()) {
                 panel->set_view(view);
                 emit panel->viewChosen();
-                QApplication::processEvents();
+                QVERIFY(settled(*window_));
                 const RgbImage image = panel->grab();
                 const double drawn = changed_share(image, flat_like(image));
                 QVERIFY2(drawn > 0.01, qPrintable(selector->itemData(m).toString() + " in " + view_title(view) +
@@ -269,7 +272,7 @@ private slots:
         selector->setCurrentIndex(selector->findData("xpsm"));
         for (const char* scene : {"data/scenes/box_on_plane.json", "data/scenes/default.json"}) {
             QVERIFY(window_->open_file(source(scene)));
-            QApplication::processEvents();
+            QVERIFY(settled(*window_));
             QCOMPARE(window_->size(), QSize(1280, 800));
             auto* list = window_->steps()->findChild<QListWidget*>("steps");
             QVERIFY(list && list->count() > 20);
@@ -330,11 +333,11 @@ private slots:
         QCOMPARE(lines_shown(), 1);
         QVERIFY(newest_shows());
         QVERIFY(!window_->open_file(source("tests/data/bad/negative_size.json")));
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY(lines_shown() >= 3);
         QVERIFY(newest_shows());
         QVERIFY(window_->open_file(source("data/scenes/box_on_plane.json")));
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QCOMPARE(lines_shown(), 1);
         QVERIFY(newest_shows());
     }
@@ -348,7 +351,7 @@ private slots:
     void importedAndPastedLightMatricesGiveTheSameMap() {
         QVERIFY(window_->open_file(source("data/scenes/box_on_plane.json")));
         window_->controls()->set_method("focused");
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         const glm::dmat4 focused = window_->inspection()->setup.maps[0].world_to_uvz;
         // As an OpenGL engine holds it: clip space [-1, 1]³, written as GLSL's mat4, column by column.
         const glm::dmat4 clip_from_world = glm::inverse(uvz_from_clip({})) * focused;
@@ -369,20 +372,20 @@ private slots:
             return largest < 1e-9;
         };
         window_->import_light_matrices(file);
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QCOMPARE(window_->inspection()->name(), std::string("custom"));
         QVERIFY2(same_map(), "imported from a file");
         window_->controls()->set_method("focused");
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QApplication::clipboard()->setText(QString::fromStdString(glsl));
         window_->paste_light_matrices();
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QCOMPARE(window_->inspection()->name(), std::string("custom"));
         QVERIFY2(same_map(), "pasted");
         const QString bad = dir.filePath("short.glsl");
         std::ofstream(bad.toStdString()) << "mat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0)";
         window_->import_light_matrices(bad);
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY2(window_->last_message().contains("short.glsl"), qPrintable(window_->last_message()));
         QVERIFY2(same_map(), "the inspection shown stays");
     }
@@ -391,11 +394,11 @@ private slots:
         window_->resize(1600, 1000);
         const QString scene = source("data/scenes/default.json");
         QVERIFY(window_->open_file(scene));
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         for (const Method& method : all_methods()) {
             if (!method.makes_maps()) continue;
             window_->controls()->set_method(QString::fromStdString(method.name));
-            QApplication::processEvents();
+            QVERIFY(settled(*window_));
             const InspectionRequest request = window_->controls()->request();
             QCOMPARE(window_->inspection()->name(), method.name);
             try {
@@ -409,7 +412,7 @@ private slots:
         const glm::dmat4 locked = window_->inspection()->setup.maps[0].world_to_uvz;
         auto* aspect = window_->controls()->findChild<QComboBox*>("aspect");
         aspect->setCurrentIndex(aspect->findData(false));  // the Camera panel's
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         const QSize panel = panel_showing(ViewKind::camera)->drawing_size();
         const double panel_aspect = static_cast<double>(panel.width()) / panel.height();
         QVERIFY2(std::abs(panel_aspect - window_->scene().camera.aspect) > 0.05, "the test needs a panel of another shape");
@@ -442,26 +445,26 @@ private slots:
         QVERIFY(!same_pose(left, placed));
         const int last = window_->steps()->findChild<QListWidget*>("steps")->count() - 1;
         window_->steps()->choose(1);
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY2(same_pose(CameraPose::of(view_camera(light)), left), "another step moved the camera");
         window_->steps()->choose(last);
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY(same_pose(CameraPose::of(view_camera(light)), left));
         auto* preset = light->findChild<QComboBox*>("presetChooser");
         emit preset->activated(preset->currentIndex());  // the user chooses the preset again
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY2(same_pose(CameraPose::of(view_camera(light)), placed), "choosing the preset kept the user's camera");
         const CameraPose left_again = leave_an_orbit();
         QComboBox* selector = window_->controls()->method_selector();
         selector->setCurrentIndex(selector->findData("lispsm"));
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY2(same_pose(CameraPose::of(view_camera(light)), left_again), "another method moved the camera");
     }
 
     // View > Before/after warp: Light space beside PPLS in the lower panels, both from the side.
     void beforeAfterWarpShowsLightSpaceAndPplsFromTheSide() {
         window_->findChild<QAction*>("beforeAfterWarp")->trigger();
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         const std::vector<ViewPanel*>& panels = window_->panels();
         QCOMPARE(static_cast<int>(panels[2]->view()), static_cast<int>(ViewKind::light));
         QCOMPARE(static_cast<int>(panels[3]->view()), static_cast<int>(ViewKind::ppls));
@@ -474,7 +477,7 @@ private slots:
         ViewPanel* camera = panel_showing(ViewKind::camera);
         const RgbImage shaded = camera->grab();
         window_->controls()->findChild<QCheckBox*>("shadowOnly")->setChecked(true);
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY2(changed_share(shaded, camera->grab()) > 0.2, "the Camera view did not change to the lit mask");
     }
 
@@ -486,7 +489,7 @@ private slots:
         QVERIFY(overlay && overlay->isVisibleTo(camera));
         overlay->setCurrentIndex(overlay->findData(static_cast<int>(MapOverlay::cascade_index)));
         emit camera->viewChosen();
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QVERIFY2(changed_share(shadows, camera->grab()) > 0.2, "the overlay did not tint the Camera view");
         QVERIFY(!panel_showing(ViewKind::world)->findChild<QComboBox*>("overlayChooser")->isVisibleTo(panel_showing(ViewKind::world)));
     }
@@ -495,7 +498,7 @@ private slots:
     void thePlotDocksShimmerIsTheCommands() {
         window_->plot()->set_kind(PlotPanel::Kind::shimmer);
         window_->findChild<QDockWidget*>("plotDock")->show();
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         const std::optional<Shimmer>& shimmer = window_->plot()->last_shimmer();
         QVERIFY2(shimmer, "the dock measured no shimmer");
         QVERIFY(shimmer->transitions() > 1000);
@@ -514,11 +517,41 @@ private slots:
                  qPrintable("the window: " + QString::fromStdString(shimmer_summary(*shimmer)) + "; the command: " + printed));
     }
 
+    // A glTF file of two cameras opens with its first; choosing the second in the Scene panel reads
+    // the file again with it. The roof marked as neither caster nor receiver leaves the casters, and
+    // the scene saved as a JSON referencing the file opens with that camera and those roles.
+    void aGltfScenesCameraAndRolesAreChosenAndSaved() {
+        QTemporaryDir dir;
+        const QString gltf = dir.filePath("two_cameras.gltf");
+        std::ofstream(gltf.toStdString()) << shadowlab::testing::two_camera_scene().dump();
+        QVERIFY(window_->open_file(gltf));
+        QVERIFY(settled(*window_));
+        const glm::dvec3 first = window_->scene().camera.position;
+        auto* camera = window_->scene_panel()->findChild<QComboBox*>("camera");
+        QVERIFY(camera && camera->count() == 2);
+        camera->setCurrentIndex(1);
+        QVERIFY(settled(*window_));
+        QVERIFY2(glm::length(window_->inspection()->scene.camera.position - first) > 1.0,
+                 "the second camera was not taken");
+        const auto roof = std::find_if(window_->scene().objects.begin(), window_->scene().objects.end(),
+                                       [](const SceneObject& o) { return o.name == "roof"; });
+        QVERIFY(roof != window_->scene().objects.end());
+        const int r = static_cast<int>(roof - window_->scene().objects.begin());
+        emit window_->scene_panel()->rolesChanged(r, false, false);
+        QVERIFY(settled(*window_));
+        QVERIFY(!window_->inspection()->casters[r]);
+        const QString saved = dir.filePath("chosen.json");
+        window_->save_scene(saved);
+        const Scene reopened = load_scene(saved.toStdString());
+        QVERIFY(glm::length(reopened.camera.position - window_->scene().camera.position) < 1e-9);
+        QVERIFY(!reopened.objects[r].casts && !reopened.objects[r].receives);
+    }
+
     void choosingAStepHighlightsItsGeometry() {
         ViewPanel* world = panel_showing(ViewKind::world);
         const RgbImage last = world->grab();
         window_->steps()->choose(2);  // the intersection body
-        QApplication::processEvents();
+        QVERIFY(settled(*window_));
         QCOMPARE(window_->steps()->chosen(), QString("body"));
         QVERIFY2(changed_share(last, world->grab()) > 0.005, "choosing a step did not change the World view");
     }

@@ -125,7 +125,7 @@ Inspection two_tile_atlas(const Scene& scene, int resolution) {
 // the plane of that surface.
 TEST(TexelsView, FocusedTexelsLandOnTheScenesSurfacesAndMapBackToThemselves) {
     const Inspection in = inspect(box_on_plane(), "focused", 256);
-    const DepthMap surfaces = every_surface_depth(in);
+    const DepthMap& surfaces = in.surface_depth();
     const std::vector<WorldTexel> texels = world_texels(in.setup, surfaces, 1);
     ASSERT_GT(texels.size(), 256u * 256u / 4);
     size_t off_surface = 0, not_back = 0, footprint_on_plane = 0;
@@ -152,7 +152,7 @@ TEST(TexelsView, FocusedTexelsLandOnTheScenesSurfacesAndMapBackToThemselves) {
 // At most the cap of texels is drawn, at the least stride that keeps to it, and the caption names it.
 TEST(TexelsView, TheStrideCapsTheTexelsDrawnAndTheCaptionSaysIt) {
     const Inspection in = inspect(box_on_plane(), "focused", 1024);
-    const DepthMap surfaces = every_surface_depth(in);
+    const DepthMap& surfaces = in.surface_depth();
     constexpr size_t kCap = 200'000;
     const int stride = texel_stride(in.setup, surfaces, kCap);
     ASSERT_GT(stride, 1) << "box_on_plane at 1024² holds more surface texels than the cap";

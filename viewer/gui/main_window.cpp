@@ -8,9 +8,12 @@
 #include <QDragEnterEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMimeData>
 #include <QPlainTextEdit>
+#include <QProgressBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -18,12 +21,16 @@
 #include <QTimer>
 #include <fstream>
 #include <utility>
+#include <vtkOpenGLRenderWindow.h>
 
 #include "gui/controls_panel.hpp"
 #include "gui/plot_panel.hpp"
+#include "gui/scene_panel.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
+#include "io/camera_import.hpp"
 #include "model/camera_in_shadow.hpp"
+#include "render/opengl_renderer.hpp"
 #include "render/rgb_image.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -34,6 +41,7 @@ constexpr int kMaxRecent = 8;
 constexpr int kIdleMessageLines = 1;   // the views get the height
 constexpr int kErrorMessageLines = 4;  // an error opens the messages until the next good change
 constexpr int kResizeSettleMs = 250;
+constexpr int kProgressAfterMs = 100;  // shorter work shows no progress line
 
 // Long work in the window: a wait cursor and a status line, painted before the work starts, both
 // gone when it ends.
@@ -60,12 +68,19 @@ QDockWidget* dock(const QString& title, const QString& name, QWidget* content, Q
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
+      computing_(new BackgroundInspection(this)),
+      progress_timer_(new QTimer(this)),
+      progress_bar_(new QProgressBar(this)),
       controls_(new ControlsPanel(this)),
+      scene_panel_(new ScenePanel(this)),
       steps_(new StepPlayer(this)),
       plot_(new PlotPanel(this)),
       messages_(new QPlainTextEdit(this)),
       aspect_timer_(new QTimer(this)) {
     setWindowTitle("ShadowLab");
+    const std::string& renderer = opengl_renderer();
+    const bool software = is_software_renderer(renderer);
+    if (software) vtkOpenGLRenderWindow::SetGlobalMaximumNumberOfMultiSamples(0);  // before the panels' windows
     setAcceptDrops(true);
     messages_->setReadOnly(true);
     messages_->setObjectName("messages");
@@ -75,6 +90,15 @@ MainWindow::MainWindow(QWidget* parent)
     aspect_timer_->setSingleShot(true);
     aspect_timer_->setInterval(kResizeSettleMs);
     connect(aspect_timer_, &QTimer::timeout, this, &MainWindow::follow_panel_aspect);
+    connect(computing_, &BackgroundInspection::landed, this, &MainWindow::land);
+    connect(computing_, &BackgroundInspection::failed, this, &MainWindow::fail);
+    progress_timer_->setInterval(kProgressAfterMs);
+    connect(progress_timer_, &QTimer::timeout, this, &MainWindow::show_progress);
+    progress_bar_->setObjectName("progress");
+    progress_bar_->setMaximumWidth(160);
+    progress_bar_->setTextVisible(false);
+    progress_bar_->hide();
+    statusBar()->addPermanentWidget(progress_bar_);
 
     // Four linked views: World | Camera over Light space | Shadow map; each can show any view.
     auto* rows = new QSplitter(Qt::Vertical, this);
@@ -83,8 +107,8 @@ MainWindow::MainWindow(QWidget* parent)
         for (ViewKind v : {pair.first, pair.second}) {
             auto* panel = new ViewPanel(v, row);
             panels_.push_back(panel);
-            connect(panel, &ViewPanel::viewChosen, this, [this, panel] {
-                redraw(panel);
+            connect(panel, &ViewPanel::viewChosen, this, [this] {
+                recompute();             // the view may read parts of the inspection not yet made
                 aspect_timer_->start();  // the Camera view may have moved to another panel
             });
             connect(panel, &ViewPanel::resized, aspect_timer_, QOverload<>::of(&QTimer::start));
@@ -105,16 +129,29 @@ MainWindow::MainWindow(QWidget* parent)
     setCentralWidget(rows);
 
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);  // every step of the longest trace shows
-    addDockWidget(Qt::LeftDockWidgetArea, dock("Controls", "controlsDock", controls_, this));
+    QDockWidget* controls_dock = dock("Controls", "controlsDock", controls_, this);
+    addDockWidget(Qt::LeftDockWidgetArea, controls_dock);
+    QDockWidget* scene_dock = dock("Scene", "sceneDock", scene_panel_, this);
+    tabifyDockWidget(controls_dock, scene_dock);
+    scene_dock->hide();  // View > Scene; shown when a glTF scene opens, whose cameras and lights it picks
+    controls_dock->raise();
     addDockWidget(Qt::RightDockWidgetArea, dock("Steps", "stepsDock", steps_, this));
     addDockWidget(Qt::BottomDockWidgetArea, dock("Messages", "messagesDock", messages_, this));
     QDockWidget* plot_dock = dock("Plot", "plotDock", plot_, this);
     addDockWidget(Qt::BottomDockWidgetArea, plot_dock);
     plot_dock->hide();  // measured on demand: View > Plot
     build_menus();
+    if (software) message(QString::fromStdString("software OpenGL (" + renderer + "): multisampling off"), false);
     statusBar()->showMessage("drop a scene (.json) or a mesh (.obj, .ply, .stl, .gltf) here, or use File > Open");
 
     connect(controls_, &ControlsPanel::changed, this, &MainWindow::recompute);
+    connect(scene_panel_, &ScenePanel::rolesChanged, this, &MainWindow::set_roles);
+    connect(scene_panel_, &ScenePanel::cameraChosen, this, [this](int index) {
+        choose_from_gltf({.camera = static_cast<size_t>(index), .light = gltf_->reference.choice.light});
+    });
+    connect(scene_panel_, &ScenePanel::lightChosen, this, [this](int index) {
+        choose_from_gltf({.camera = gltf_->reference.choice.camera, .light = static_cast<size_t>(index)});
+    });
     connect(controls_, &ControlsPanel::lightChanged, this, [this] {
         scene_.light.direction = controls_->light_direction();
         recompute();
@@ -162,6 +199,10 @@ void MainWindow::build_menus() {
     file->addSeparator();
     file->addAction("&Import light matrices…", this, &MainWindow::import_dialog);
     file->addAction("Paste light matrices", this, &MainWindow::paste_light_matrices);
+    file->addAction("Import &camera matrices…", this, &MainWindow::import_camera_dialog);
+    save_scene_ = file->addAction("&Save scene…", this, &MainWindow::save_scene_dialog);
+    save_scene_->setToolTip("a glTF scene: a scene JSON referencing its file, with the camera, light and roles chosen");
+    save_scene_->setEnabled(false);
     file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
     QMenu* view = menuBar()->addMenu("&View");
     for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
@@ -174,27 +215,71 @@ void MainWindow::build_menus() {
 bool MainWindow::open_file(const QString& path) {
     try {
         Scene loaded = load_scene(path.toStdString());  // JSON, glTF (its own camera and light) or a lone mesh
-        std::swap(scene_, loaded);
-        controls_->set_light_direction(scene_.light.direction);
-        const std::optional<Camera> outside = std::exchange(camera_outside_, std::nullopt);
-        controls_->clear_camera_in_shadow();
-        inspection_.reset();
-        for (ViewPanel* panel : panels_) panel->forget_camera();
-        recompute();
-        if (!inspection_) {  // the new scene cannot be inspected: back to the old one
-            std::swap(scene_, loaded);
-            if (outside) scene_.camera = *outside;
-            recompute();
-            return false;
-        }
-        remember_recent(path);
-        setWindowTitle("ShadowLab — " + QFileInfo(path).fileName());
-        message("opened " + path + " (" + QString::number(scene_.objects.size()) + " objects)", false);
+        std::optional<GltfSource> gltf;
+        if (std::optional<GltfReference> reference =
+                gltf_reference_of(QFileInfo(path).absoluteFilePath().toStdString()))
+            gltf = GltfSource{.reference = *reference, .contents = gltf_contents(reference->gltf_file)};
+        replace_scene(std::move(loaded), std::move(gltf), path);
         return true;
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);
         return false;
     }
+}
+
+// The scene shown gives way to `scene`, until its inspection lands; if it cannot be inspected, the
+// scene before comes back (fail).
+void MainWindow::replace_scene(Scene scene, std::optional<GltfSource> gltf, const QString& opened_path) {
+    opening_ = Opening{.path = opened_path,
+                       .previous = std::exchange(scene_, std::move(scene)),
+                       .previous_gltf = std::exchange(gltf_, std::move(gltf)),
+                       .previous_camera_outside = std::exchange(camera_outside_, std::nullopt)};
+    controls_->set_light_direction(scene_.light.direction);
+    controls_->clear_camera_in_shadow();
+    for (ViewPanel* panel : panels_) panel->forget_camera();
+    show_scene_parts();
+    recompute();
+}
+
+void MainWindow::show_scene_parts() {
+    scene_panel_->set_scene(scene_, gltf_ ? &gltf_->contents : nullptr,
+                            gltf_ ? gltf_->reference.choice : SceneChoice{});
+    save_scene_->setEnabled(gltf_.has_value());
+    if (gltf_) findChild<QDockWidget*>("sceneDock")->show();
+}
+
+// Another camera or light of the glTF file: the scene read again with it, the roles kept.
+void MainWindow::choose_from_gltf(const SceneChoice& choice) {
+    try {
+        GltfReference reference = gltf_->reference;
+        reference.choice = choice;
+        reference.roles = roles_by_name(scene_, reference.gltf_file);
+        reference.name = scene_.name;
+        GltfScene chosen = referenced_scene(reference, scene_.source_file);
+        for (const std::string& assumed : chosen.defaulted) message(QString::fromStdString(assumed), false);
+        replace_scene(std::move(chosen.scene), GltfSource{.reference = reference, .contents = gltf_->contents},
+                      QString());
+    } catch (const std::exception& e) {
+        message(QString::fromStdString(e.what()), true);
+        show_scene_parts();  // the chooser back to the choice in force
+    }
+}
+
+// An object marked as casting or receiving (or neither); refused, with the reason, if the scene
+// would break a rule (a light inside a mesh that casts).
+void MainWindow::set_roles(int object, bool casts, bool receives) {
+    SceneObject& changed = scene_.objects.at(static_cast<size_t>(object));
+    const SceneObject before = changed;
+    changed.casts = casts, changed.receives = receives;
+    try {
+        validate_scene(scene_);
+    } catch (const std::exception& e) {
+        changed = before;
+        message(QString::fromStdString(e.what()), true);
+        show_scene_parts();
+        return;
+    }
+    recompute();
 }
 
 MainWindow::AspectInForce MainWindow::aspect_in_force() const {
@@ -216,20 +301,43 @@ void MainWindow::follow_panel_aspect() {
     if (inspection_ && aspect_in_force().aspect != inspection_->scene.camera.aspect) recompute();
 }
 
+bool MainWindow::computing() const { return computing_->busy() || !undrawn_.empty(); }
+
 void MainWindow::recompute() {
     if (scene_.objects.empty()) return;
-    const InspectionRequest request = controls_->request();
     const AspectInForce aspect = aspect_in_force();
-    try {
-        const BusyNotice busy(statusBar(), QString::fromStdString("computing " + request.method));
-        Scene computed = scene_;
-        computed.camera.aspect = aspect.aspect;
-        inspection_ = inspect_scene(computed, request);
-    } catch (const std::exception& e) {
-        message(QString::fromStdString(e.what()), true);
-        return;
-    }
+    InspectionJob job{.scene = scene_, .request = controls_->request(), .shown = {}};
+    job.scene.camera.aspect = aspect.aspect;
+    for (ViewPanel* panel : panels_)
+        job.shown.push_back({panel->view(), panel->options_for(view_options(), aspect.aspect)});
+    aspect_source_ = aspect.source;
+    computing_->submit(std::move(job));
+    progress_timer_->start();
+}
+
+// Work over 100 ms: a progress bar by phases, and the phase in the status line.
+void MainWindow::show_progress() {
+    if (!computing_->busy()) return;
+    const JobProgress progress = computing_->progress();
+    progress_bar_->setRange(0, progress.total);
+    progress_bar_->setValue(progress.done);
+    progress_bar_->show();
+    statusBar()->showMessage(QString::fromStdString(progress.phase) + "…");
+}
+
+// The newest change's inspection: every view redraws from it.
+void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
+    progress_timer_->stop();
+    progress_bar_->hide();
+    inspection_ = std::move(inspection);
     fit_messages(kIdleMessageLines);
+    if (opening_ && !opening_->path.isEmpty()) {
+        const QString path = std::exchange(opening_, std::nullopt)->path;
+        remember_recent(path);
+        setWindowTitle("ShadowLab — " + QFileInfo(path).fileName());
+        message("opened " + path + " (" + QString::number(scene_.objects.size()) + " objects)", false);
+    }
+    opening_.reset();
     steps_->set_trace(inspection_->trace);
     const std::string bias = inspection_->bias < 0.0 ? "slope-scaled" : std::to_string(inspection_->bias);
     const std::string what = inspection_->has_map()
@@ -239,11 +347,13 @@ void MainWindow::recompute() {
     const std::string notes_label = inspection_->has_map() ? "fallback: " : "limits: ";
     const std::vector<Note>& notes = inspection_->notes();
     const std::string told = notes_label + (notes.empty() ? "none" : describe(notes));
-    statusBar()->showMessage(QString::fromStdString(inspection_->title() + " — " + what + " — " + told) +
-                             QString(" — aspect %1 from %2").arg(aspect.aspect, 0, 'f', 2).arg(aspect.source));
+    statusBar()->showMessage(
+        QString::fromStdString(inspection_->title() + " — " + what + " — " + told) +
+        QString(" — aspect %1 from %2").arg(inspection_->scene.camera.aspect, 0, 'f', 2).arg(aspect_source_));
     if (!notes.empty()) message(QString::fromStdString(told), false);
     redraw();
     if (plot_->isVisible() && inspection_->has_map()) {
+        const InspectionRequest request = controls_->request();
         try {
             const BusyNotice busy(statusBar(), plot_->work(request.method));
             plot_->update_plot(inspection_->scene, inspection_->method->name, request.settings, request.resolution);
@@ -251,6 +361,22 @@ void MainWindow::recompute() {
             message(QString("plot: ") + e.what(), true);
         }
     }
+}
+
+// The newest change cannot be inspected: said, the views keep the last inspection, and a scene just
+// opened gives way to the one before it.
+void MainWindow::fail(const QString& why) {
+    progress_timer_->stop();
+    progress_bar_->hide();
+    message(why, true);
+    if (!opening_) return;
+    Opening opened = *std::exchange(opening_, std::nullopt);
+    scene_ = std::move(opened.previous);
+    gltf_ = std::move(opened.previous_gltf);
+    camera_outside_ = opened.previous_camera_outside;
+    controls_->set_light_direction(scene_.light.direction);
+    show_scene_parts();
+    recompute();
 }
 
 // Into a caster's shadow volume (z-pass fails there, z-fail holds), or back where the camera was.
@@ -281,17 +407,34 @@ void MainWindow::move_light_to(const glm::dvec3& point) {
     recompute();
 }
 
+// One panel per turn of the event loop: the GUI thread answers between two (a drawing under a
+// software OpenGL takes tens of milliseconds), and a panel not yet drawn when a newer inspection
+// lands is drawn from that one.
 void MainWindow::redraw() {
-    for (ViewPanel* panel : panels_) redraw(panel);
+    const bool drawing = !undrawn_.empty();
+    undrawn_.assign(panels_.begin(), panels_.end());
+    if (!drawing) QTimer::singleShot(0, this, &MainWindow::redraw_next_panel);
+}
+
+void MainWindow::redraw_next_panel() {
+    if (undrawn_.empty()) return;
+    ViewPanel* panel = undrawn_.front();
+    undrawn_.erase(undrawn_.begin());
+    redraw(panel);
+    if (!undrawn_.empty()) QTimer::singleShot(0, this, &MainWindow::redraw_next_panel);
+}
+
+ViewOptions MainWindow::view_options() const {
+    ViewOptions options;
+    options.step = steps_->chosen().toStdString();
+    options.lit_mask = controls_->shadow_only();
+    return options;
 }
 
 void MainWindow::redraw(ViewPanel* panel) {
     if (!inspection_) return;
-    ViewOptions options;
-    options.step = steps_->chosen().toStdString();
-    options.lit_mask = controls_->shadow_only();
     try {
-        for (const std::string& note : panel->show(*inspection_, options).notes)
+        for (const std::string& note : panel->show(*inspection_, view_options()).notes)
             message(QString(view_title(panel->view())) + ": " + QString::fromStdString(note), false);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);
@@ -375,6 +518,61 @@ void MainWindow::paste_light_matrices() {
     if (!out) return message("cannot write " + path, true);
     out.close();
     import_light_matrices(path);
+}
+
+void MainWindow::import_camera_dialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, "Import an engine's camera (view and projection)", QString(),
+                                     "Camera matrices (*.glsl *.hlsl *.json *.txt);;All files (*)");
+    if (path.isEmpty()) return;
+    bool ok = false;
+    const QString text =
+        QInputDialog::getText(this, "The engine's conventions",
+                              "key=value, comma-separated (empty: OpenGL's), e.g. clip_depth=zero_to_one, "
+                              "reversed_z=on, clip_y=down, looks_along=plus_z",
+                              QLineEdit::Normal, QString(), &ok);
+    if (!ok) return;
+    std::map<std::string, std::string> conventions;
+    for (const QString& pair : text.split(',', Qt::SkipEmptyParts)) {
+        const QStringList kv = pair.split('=');
+        if (kv.size() != 2)
+            return message("camera conventions: expected key=value, got '" + pair.trimmed() + "'", true);
+        conventions[kv[0].trimmed().toStdString()] = kv[1].trimmed().toStdString();
+    }
+    import_camera_matrices(path, conventions);
+}
+
+void MainWindow::import_camera_matrices(const QString& file, const std::map<std::string, std::string>& conventions) {
+    try {
+        const Camera imported =
+            import_camera(file.toStdString(), camera_conventions_from(conventions), scene_.bounds());
+        scene_.camera = imported;
+        camera_outside_.reset();
+        controls_->clear_camera_in_shadow();
+        for (ViewPanel* panel : panels_) panel->forget_camera();
+        message("camera from " + file, false);
+        recompute();
+    } catch (const std::exception& e) {
+        message(QString::fromStdString(e.what()), true);
+    }
+}
+
+void MainWindow::save_scene_dialog() {
+    if (!gltf_) return;
+    const QString path = QFileDialog::getSaveFileName(this, "Save the scene (a JSON referencing its glTF file)",
+                                                      QString::fromStdString(scene_.name) + ".json", "Scenes (*.json)");
+    if (!path.isEmpty()) save_scene(path);
+}
+
+void MainWindow::save_scene(const QString& json_file) {
+    if (!gltf_) return message("only a glTF scene is saved (as a JSON referencing its file)", true);
+    try {
+        save_scene_referencing_gltf(json_file.toStdString(), gltf_->reference.gltf_file, gltf_->reference.choice,
+                                    scene_);
+        message("wrote " + json_file, false);
+    } catch (const std::exception& e) {
+        message(QString::fromStdString(e.what()), true);
+    }
 }
 
 void MainWindow::remember_recent(const QString& path) {

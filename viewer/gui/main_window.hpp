@@ -1,24 +1,33 @@
 #pragma once
 // The inspector's window: controls on the left, four linked views in the middle, the step player
 // on the right (the full height), messages (one line until an error) and the plot below. Every
-// change recomputes the method once and redraws all views from that one Inspection. The method
+// change recomputes the method once, off the GUI thread (BackgroundInspection: the latest change
+// wins, a progress line shows work over 100 ms), and redraws all views from that one Inspection. The method
 // computes with the scene camera's aspect, as the CLI does, unless the user unlocks it: then with
 // the Camera panel's shape, recomputed as the panel is resized.
+#include <map>
+#include <memory>
 #include <optional>
 #include <QMainWindow>
 #include <QTemporaryDir>
 
+#include "gui/background_inspection.hpp"
 #include "io/matrix_export.hpp"
+#include "scene/gltf_reference.hpp"
+#include "scene/gltf_scene.hpp"
 #include "model/inspection.hpp"
 
+class QAction;
 class QMenu;
 class QPlainTextEdit;
+class QProgressBar;
 class QSplitter;
 class QTimer;
 
 namespace shadowlab {
 
 class ControlsPanel;
+class ScenePanel;
 class PlotPanel;
 class StepPlayer;
 class ViewPanel;
@@ -29,8 +38,9 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
 
     // A scene JSON, a glTF scene (its own camera and light) or a mesh file (placed on a ground plane,
-    // with a camera and a sun). On failure the message names the file and the field, and the current
-    // scene stays.
+    // with a camera and a sun); false if it cannot be read: the message names the file and the
+    // field, and the current scene stays. A scene read that cannot be inspected is said when its
+    // computation lands, and the scene before it comes back.
     bool open_file(const QString& path);
     // An engine's light matrices (GLSL, HLSL or JSON: core/io/matrix_import.hpp): the method becomes
     // `custom` reading them (File ▸ Import light matrices). A file that cannot be read is named in
@@ -39,12 +49,19 @@ public:
     // The same from the clipboard's text (File ▸ Paste light matrices), kept in a file of the
     // window's own for as long as it runs.
     void paste_light_matrices();
+    // An engine's camera (view and projection matrices: core/io/camera_import.hpp) replaces the
+    // scene's, read under `conventions` (key=value: clip_depth, reversed_z, clip_y, looks_along, storage).
+    void import_camera_matrices(const QString& file, const std::map<std::string, std::string>& conventions);
+    // The scene as a JSON referencing its glTF file, with the camera, light and roles chosen.
+    void save_scene(const QString& json_file);
 
     const Scene& scene() const { return scene_; }
-    const Inspection* inspection() const { return inspection_ ? &*inspection_ : nullptr; }
+    const Inspection* inspection() const { return inspection_.get(); }  // the one the views show
+    bool computing() const;  // a change's inspection has not landed, or not every panel is drawn from it
     ControlsPanel* controls() const { return controls_; }
     StepPlayer* steps() const { return steps_; }
     PlotPanel* plot() const { return plot_; }
+    ScenePanel* scene_panel() const { return scene_panel_; }
     const std::vector<ViewPanel*>& panels() const { return panels_; }
     QString last_message() const { return last_message_; }
 
@@ -65,25 +82,58 @@ private:
     ViewPanel* camera_panel() const;  // the first panel showing the Camera view, or nullptr
     void follow_panel_aspect();
     void recompute();
+    void land(std::shared_ptr<const Inspection> inspection);
+    void fail(const QString& why);
+    void show_progress();
+    ViewOptions view_options() const;  // what every panel draws with
     void show_before_after_warp();
     void move_light_to(const glm::dvec3& point);
     void put_camera_in_shadow(bool inside);
     void redraw();
     void redraw(ViewPanel* panel);
+    void redraw_next_panel();
     void message(const QString& text, bool error);
     void fit_messages(int lines);
     void open_dialog();
     void export_view(ViewPanel* panel);
     void export_matrices(MatrixFormat format, bool to_clipboard);
     void import_dialog();
+    void import_camera_dialog();
+    void save_scene_dialog();
+    // The glTF file the scene comes from, which of its cameras and lights it took, and all it holds.
+    struct GltfSource {
+        GltfReference reference;
+        GltfContents contents;
+    };
+    void replace_scene(Scene scene, std::optional<GltfSource> gltf, const QString& opened_path);
+    void choose_from_gltf(const SceneChoice& choice);
+    void set_roles(int object, bool casts, bool receives);
+    void show_scene_parts();
     void remember_recent(const QString& path);
     void rebuild_recent_menu();
     void restore_settings();
 
     Scene scene_;
     std::optional<Camera> camera_outside_;  // the camera before "Camera in shadow" moved it
-    std::optional<Inspection> inspection_;
+    // A scene put in place whose inspection has not landed yet (a file opened: its path), and the
+    // scene it replaced.
+    struct Opening {
+        QString path;
+        Scene previous;
+        std::optional<GltfSource> previous_gltf;
+        std::optional<Camera> previous_camera_outside;
+    };
+    std::optional<GltfSource> gltf_;
+    std::optional<Opening> opening_;
+    std::shared_ptr<const Inspection> inspection_;
+    BackgroundInspection* computing_;
+    const char* aspect_source_ = "";  // where the newest change's camera aspect came from
+    QTimer* progress_timer_;          // while computing: the progress line after 100 ms
+    QProgressBar* progress_bar_;
+    std::vector<ViewPanel*> undrawn_;  // the panels still to draw from the inspection shown
     ControlsPanel* controls_;
+    ScenePanel* scene_panel_;
+    QAction* save_scene_ = nullptr;
     StepPlayer* steps_;
     PlotPanel* plot_;
     QPlainTextEdit* messages_;

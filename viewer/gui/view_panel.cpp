@@ -154,6 +154,19 @@ void ViewPanel::show_choosers_for_view() {
     scene_in_ppls_->setVisible(view() == ViewKind::ppls);
 }
 
+ViewOptions ViewPanel::options_for(const ViewOptions& options, double aspect) const {
+    ViewOptions sized = options;
+    sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
+    sized.height = std::max(36, static_cast<int>(sized.width / aspect));
+    sized.error = static_cast<ErrorShown>(error_->currentData().toInt());
+    sized.aliasing = static_cast<AliasingShown>(aliasing_->currentData().toInt());
+    sized.texture = static_cast<TextureShown>(texture_->currentData().toInt());
+    sized.overlay = static_cast<MapOverlay>(overlay_->currentData().toInt());
+    sized.preset = preset();
+    sized.scene_in_ppls = scene_in_ppls_->isChecked();
+    return sized;
+}
+
 ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& options) {
     window_->GetRenderers()->RemoveAllItems();
     vtkNew<vtkRenderer> renderer;
@@ -161,19 +174,11 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     scene_renderer_ = renderer;
     camera_origin_ = inspection.scene.camera.position;  // the Camera view draws relative to it
     if (looks_through_scene_camera(view())) letterbox(renderer, inspection.scene.camera);
-    ViewOptions sized = options;
-    sized.width = std::max(64, widget_->width() / 2);  // the Error view traces half the panel's pixels
-    sized.height = std::max(36, static_cast<int>(sized.width / inspection.scene.camera.aspect));
-    sized.error = static_cast<ErrorShown>(error_->currentData().toInt());
-    sized.aliasing = static_cast<AliasingShown>(aliasing_->currentData().toInt());
-    sized.texture = static_cast<TextureShown>(texture_->currentData().toInt());
+    const ViewOptions sized = options_for(options, inspection.scene.camera.aspect);
     // A chooser the inspection gives nothing to choose is greyed: m beside the signed error, the
     // moments of a filter that reads none.
     aliasing_->setEnabled(!shows_signed_error(inspection, sized.error));
     texture_->setEnabled(inspection.has_map() && inspection.lookup.filter.reads_moments());
-    sized.overlay = static_cast<MapOverlay>(overlay_->currentData().toInt());
-    sized.preset = preset();
-    sized.scene_in_ppls = scene_in_ppls_->isChecked();
     const ViewReport report = build_view(renderer, inspection, view(), sized);
     if (kept_camera_ && is_space_view(view())) {
         kept_camera_->apply_to(renderer->GetActiveCamera());

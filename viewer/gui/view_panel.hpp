@@ -33,6 +33,8 @@ public:
     void set_preset(SpacePreset preset);
     void forget_camera();  // the next redraw places the view's default camera (a new scene)
     QSize drawing_size() const;  // the VTK widget's, without the choosers
+    // `options` completed by the panel's choosers and size, for a camera of `aspect`: what show draws with.
+    ViewOptions options_for(const ViewOptions& options, double aspect) const;
     // Redraws from the inspection; returns what the view could not draw.
     ViewReport show(const Inspection& inspection, const ViewOptions& options);
     RgbImage grab();  // what the panel shows now

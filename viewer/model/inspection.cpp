@@ -14,10 +14,16 @@ struct Inspection::LazyDepth {
     DepthMap depth;
 };
 
-const DepthMap& Inspection::depth() const {
-    if (!depth_) depth_ = std::make_shared<LazyDepth>();
-    std::call_once(depth_->once, [&] { depth_->depth = rasterize_depth(triangles, casters, setup, resolution); });
-    return depth_->depth;
+const DepthMap& Inspection::lazily_rasterized(std::shared_ptr<LazyDepth>& lazy, const std::vector<bool>& drawn) const {
+    if (!lazy) lazy = std::make_shared<LazyDepth>();
+    std::call_once(lazy->once, [&] { lazy->depth = rasterize_depth(triangles, drawn, setup, resolution); });
+    return lazy->depth;
+}
+
+const DepthMap& Inspection::depth() const { return lazily_rasterized(depth_, casters); }
+
+const DepthMap& Inspection::surface_depth() const {
+    return lazily_rasterized(surface_depth_, std::vector<bool>(scene.objects.size(), true));
 }
 
 struct Inspection::Judged {

@@ -53,6 +53,9 @@ struct Inspection {
     // Camera view draws its own on the GPU, so a change pays for the CPU's only when a view (Shadow
     // map, Texels, Error) or a measure reads it. Made from `setup` as it is at that first call.
     const DepthMap& depth() const;
+    // The same with every object drawn, receivers too: where each texel lands on a surface (the
+    // Texels view back-projects them).
+    const DepthMap& surface_depth() const;
 
     // The exact reference of a width x height camera image (soft for an area light: light_reference),
     // traced on the first call for that size;
@@ -62,9 +65,12 @@ struct Inspection {
     // through `lookup`, m and depth steps; a technique's verdicts.
     const ShadowError& error(int width, int height) const;
 
+    // The lazy parts are made on first reading, by one thread at a time: the window's worker fills
+    // them (views/view.hpp, prepare_view) before the GUI thread sees the inspection.
 private:
-    struct LazyDepth;  // the depth map, made once
-    mutable std::shared_ptr<LazyDepth> depth_;
+    struct LazyDepth;  // a depth map, made once
+    const DepthMap& lazily_rasterized(std::shared_ptr<LazyDepth>& lazy, const std::vector<bool>& drawn) const;
+    mutable std::shared_ptr<LazyDepth> depth_, surface_depth_;
     struct Judged;  // the reference and error of one image size
     Judged& judged(int width, int height) const;
     mutable std::shared_ptr<std::deque<Judged>> judged_;  // most recently asked for first

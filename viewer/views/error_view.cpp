@@ -156,16 +156,20 @@ std::string shares(const ShadowError& e) {
 
 }  // namespace
 
+// A technique is judged on the image it ran on; a map on an image of the panel's size.
+glm::ivec2 judged_image_size(const Inspection& in, const ViewOptions& options) {
+    if (!in.has_map()) return {in.image_width, in.image_height};
+    const int width = options.width > 0 ? options.width : 640;
+    return {width, options.height > 0 ? options.height
+                                      : std::max(1, static_cast<int>(std::lround(width / in.scene.camera.aspect)))};
+}
+
 ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
     const glm::dvec3 background = unit_colour(colours::kNotVisible);
     renderer->SetBackground(background.r, background.g, background.b);
-    // A technique is judged on the image it ran on; a map on an image of the panel's size.
-    const int width = !in.has_map() ? in.image_width : options.width > 0 ? options.width : 640;
-    const int height = !in.has_map()        ? in.image_height
-                       : options.height > 0 ? options.height
-                                            : std::max(1, static_cast<int>(std::lround(width / in.scene.camera.aspect)));
-    const ReferenceImage& ref = in.reference(width, height);
-    const ShadowError& e = in.error(width, height);
+    const glm::ivec2 judged = judged_image_size(in, options);
+    const ReferenceImage& ref = in.reference(judged.x, judged.y);
+    const ShadowError& e = in.error(judged.x, judged.y);
     if (shows_signed_error(in, options.error)) {
         show_image(renderer, paint_signed_error(e.visibility, ref));
         add_signed_error_bar(renderer);

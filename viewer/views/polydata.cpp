@@ -94,13 +94,12 @@ Placed edges(const Placement& placement, const std::vector<std::pair<glm::dvec3,
     return b.finish(nullptr, lines, nullptr);
 }
 
-Placed box_edges(const Aabb& box, const Placement& placement) {
+// A box's 12 edges: each corner joined to the corners one axis above it.
+void add_box_edges(const Aabb& box, std::vector<std::pair<glm::dvec3, glm::dvec3>>& segments) {
     const auto corner = box.corners();
-    std::vector<std::pair<glm::dvec3, glm::dvec3>> segments;
     for (int i = 0; i < 8; ++i)
         for (int bit : {1, 2, 4})
             if (!(i & bit)) segments.push_back({corner[i], corner[i | bit]});
-    return edges(placement, segments);
 }
 
 Placed frustum_edges(const Frustum& f, const Placement& placement) {
@@ -269,12 +268,19 @@ Placed points_polydata(const std::vector<glm::dvec3>& points, const Placement& p
     return b.finish(nullptr, nullptr, verts);
 }
 
+Placed boxes_polydata(const std::vector<Aabb>& boxes, const Placement& placement) {
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> segments;
+    for (const Aabb& box : boxes) add_box_edges(box, segments);
+    return edges(placement, segments);
+}
+
 Placed geometry_polydata(const TraceGeometry& geometry, const Placement& placement) {
     return std::visit(
         [&](const auto& g) -> Placed {
             using G = std::decay_t<decltype(g)>;
             if constexpr (std::is_same_v<G, PointSet>) return points_polydata(g.points, placement);
-            else if constexpr (std::is_same_v<G, Aabb>) return box_edges(g, placement);
+            else if constexpr (std::is_same_v<G, Aabb>)
+                return boxes_polydata({g}, placement);
             else if constexpr (std::is_same_v<G, ConvexPolyhedron>) return faces(g, placement);
             else if constexpr (std::is_same_v<G, SegmentSet>) return edges(placement, g.segments);
             else if constexpr (std::is_same_v<G, PolygonSet>) return faces(g, placement);

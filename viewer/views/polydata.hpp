@@ -49,6 +49,8 @@ std::optional<Placed> outline_polydata(const TraceGeometry& geometry, const Plac
 
 // Line segments, each from .first to .second.
 Placed segments_polydata(const std::vector<std::pair<glm::dvec3, glm::dvec3>>& segments, const Placement& placement);
+// Many boxes' edges in one polydata (one actor: a town's hundreds of boxes draw at once).
+Placed boxes_polydata(const std::vector<Aabb>& boxes, const Placement& placement);
 
 // Points as vertices (for glyph-free point rendering).
 Placed points_polydata(const std::vector<glm::dvec3>& points, const Placement& placement);

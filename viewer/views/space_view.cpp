@@ -68,9 +68,8 @@ void draw_light_and_axes(SpaceCanvas& canvas) {
 }
 
 void draw_input_boxes(SpaceCanvas& canvas, const std::vector<Aabb>& boxes, Role role) {
-    const Placement placement = canvas.frame().placement_from(glm::dmat4(1.0));
-    for (const Aabb& box : boxes)
-        canvas.draw(geometry_polydata(box, placement), {.colour = role_style(role).colour, .width = 1.0}, role_style(role).legend);
+    canvas.draw(boxes_polydata(boxes, canvas.frame().placement_from(glm::dmat4(1.0))),
+                {.colour = role_style(role).colour, .width = 1.0}, role_style(role).legend);
 }
 
 // The visible points the map misses where they are in shadow (the map leaves them wrongly lit),

@@ -124,10 +124,6 @@ size_t surface_texels(const ShadowSetup& setup, const DepthMap& depth, int strid
 
 }  // namespace
 
-DepthMap every_surface_depth(const Inspection& in) {
-    return rasterize_depth(in.triangles, std::vector<bool>(in.scene.objects.size(), true), in.setup, in.resolution);
-}
-
 std::vector<WorldTexel> world_texels(const ShadowSetup& setup, const DepthMap& depth, int stride) {
     std::vector<glm::dmat4> world_from_uvz;
     for (const ShadowMap& map : setup.maps) world_from_uvz.push_back(glm::inverse(map.world_to_uvz));
@@ -262,7 +258,7 @@ ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in) {
                     [](const ShadowMap& m) { return m.projection == Projection::paraboloid; }))
         report.notes.push_back("paraboloid maps are not back-projected (their texels' edges bend)");
 
-    const DepthMap surfaces = every_surface_depth(in);
+    const DepthMap& surfaces = in.surface_depth();
     const int stride = texel_stride(in.setup, surfaces, kMostQuads);
     const std::vector<WorldTexel> texels = world_texels(in.setup, surfaces, stride);
     auto quads = actor_for(texel_quads(texels, stride, origin), glm::dvec3(1.0));

@@ -16,6 +16,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
+#include "views/space_parts.hpp"
 #include "views/view_parts.hpp"
 
 namespace shadowlab {
@@ -118,6 +119,26 @@ ViewReport build_view(vtkRenderer* renderer, const Inspection& in, ViewKind view
         case ViewKind::error: return build_error_view(renderer, in, options);
         case ViewKind::stencil: return build_stencil_view(renderer, in);
         default: return build_space_view(renderer, in, view, options);
+    }
+}
+
+void prepare_view(const Inspection& in, ViewKind view, const ViewOptions& options) {
+    switch (view) {
+        case ViewKind::camera: return;  // drawn on the GPU
+        case ViewKind::shadow_map:
+            if (in.has_map()) in.depth();
+            return;
+        case ViewKind::texels:
+            if (in.has_map()) in.surface_depth();
+            return;
+        case ViewKind::error: {
+            const glm::ivec2 size = judged_image_size(in, options);
+            in.error(size.x, size.y);
+            return;
+        }
+        case ViewKind::stencil: return;  // a technique's own image, traced when it ran
+        default:
+            if (in.has_map()) visible_points_missed(in);  // the space views mark them
     }
 }
 

@@ -71,4 +71,8 @@ struct ViewReport {
 // std::invalid_argument for a step id the trace lacks.
 ViewReport build_view(vtkRenderer* renderer, const Inspection& inspection, ViewKind view, const ViewOptions& options);
 
+// Computes now the inspection's lazy parts that build_view would read for this view (the depth maps,
+// a reference, an error against it), so that a worker thread pays for them and drawing only draws.
+void prepare_view(const Inspection& inspection, ViewKind view, const ViewOptions& options);
+
 }  // namespace shadowlab

@@ -22,10 +22,12 @@ ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in);
 ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
 ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in);
 
-// The Texels view's back-projection (texels_view.cpp). The setup's maps rasterized over every object,
-// receivers too: where each texel lands on the scene's surfaces.
-DepthMap every_surface_depth(const Inspection& in);
-// A texel of a linear map or a cube face carried back to the world point its depth puts it at.
+// The camera image the Error view judges (a technique's own; for a map, options.width x height).
+glm::ivec2 judged_image_size(const Inspection& in, const ViewOptions& options);
+
+// The Texels view's back-projection (texels_view.cpp), from Inspection::surface_depth: where each
+// texel lands on the scene's surfaces. A texel of a linear map or a cube face carried back to the world point its depth
+// puts it at.
 struct WorldTexel {
     int map = 0;                        // its index in the setup
     glm::ivec2 texel{0};                // in the texture
