@@ -1,10 +1,9 @@
 #include "volumes/stencil_count.hpp"
 
-#include <cmath>
 #include <optional>
 
-#include "geometry/homogeneous_plane.hpp"
-#include "reference/camera_rays.hpp"
+#include "math/parallel_rows.hpp"
+#include "raster/polygon_spans.hpp"
 #include "techniques/pixel_footprint.hpp"
 
 namespace shadowlab {
@@ -12,86 +11,116 @@ namespace {
 
 constexpr double kSameDepth = 1e-5;  // relative: a face this near the visible point is behind it
 
-// A volume polygon as seen from one eye.
-struct EyePolygon {
-    std::vector<glm::dvec3> edge_normals;  // of the planes through the eye and each edge, inside positive
-    glm::dvec4 plane;                      // the polygon's, pointing out of the volume
-    double plane_at_eye;                   // > 0: the eye sees its outside (front-facing)
-    int multiplicity;
-    bool drawn;                            // does the counting rule draw it (fill)
+// A volume polygon as the stencil pass draws it: where it lands, and what its fragments add to
+// the stencil per the outcome of the depth test (glStencilOp's zfail and zpass operations).
+struct StencilFace {
+    ScreenPolygon screen;
+    PixelBox box;           // the rows (and columns) it may cover
+    int on_depth_pass = 0;  // z-pass (Heidmann): front faces increment, back faces decrement
+    int on_depth_fail = 0;  // z-fail (Carmack): back faces increment, front faces decrement
+    int fragments = 0;      // its multiplicity where the rule draws it
 };
 
-// Nullopt when the eye lies in the polygon's plane: every eye ray misses it.
-std::optional<EyePolygon> seen_from(const VolumePolygon& p, const glm::dvec3& eye, bool drawn) {
-    const glm::dvec4 e(eye, 1.0);
-    EyePolygon out{{}, polygon_plane(p.vertices), 0.0, p.multiplicity, drawn};
-    out.plane_at_eye = glm::dot(out.plane, e);
-    if (out.plane_at_eye == 0.0) return std::nullopt;
-    glm::dvec4 inside(0.0);  // a point of the polygon: the sum of its vertices
-    for (const glm::dvec4& v : p.vertices) inside += v;
-    for (std::size_t i = 0; i < p.vertices.size(); ++i) {
-        const glm::dvec4 q = plane_through(e, p.vertices[i], p.vertices[(i + 1) % p.vertices.size()]);
-        if (q == glm::dvec4(0.0)) continue;  // an edge collapsed at infinity
-        const double side = glm::dot(q, inside);
-        if (side == 0.0) return std::nullopt;
-        out.edge_normals.push_back(glm::dvec3(q) * (side > 0.0 ? 1.0 : -1.0));
-    }
-    if (out.edge_normals.size() < 3) return std::nullopt;  // collapsed to a segment or a point
-    return out;
-}
-
-// The ray's t (view depth) where it crosses the polygon, +inf for a crossing at infinity;
-// nullopt when it passes by. Inside every edge plane means the line meets the polygon on the
-// ray's forward side; its plane then gives t = -(plane . eye) / (plane . direction).
-std::optional<double> crossing(const EyePolygon& p, const glm::dvec3& d) {
-    for (const glm::dvec3& n : p.edge_normals)
-        if (glm::dot(n, d) < 0.0) return std::nullopt;
-    const double along = glm::dot(glm::dvec3(p.plane), d);
-    return along == 0.0 ? INFINITY : std::abs(p.plane_at_eye / along);
-}
-
-}  // namespace
-
-// Counted in eye-relative coordinates: the planes through the eye and each edge are then built from
-// small numbers, and the verdicts do not change when the scene stands far from the origin.
-StencilCounts count_stencil(const ShadowVolume& volume, const Camera& camera, const ReferenceImage& image,
-                            CountRule drawn) {
+// The camera moved to the origin: the view space the faces are rasterized in.
+Camera at_origin(const Camera& camera) {
     Camera eye_camera = camera;
     eye_camera.position = glm::dvec3(0.0);
     eye_camera.target = camera.target - camera.position;
-    const CameraRays rays(eye_camera, image.width, image.height);
-    const glm::dmat4 eye_to_clip = eye_camera.infinite_projection_matrix() * eye_camera.view_matrix();
-    std::vector<EyePolygon> polygons;
-    std::vector<PixelBox> boxes;
+    return eye_camera;
+}
+
+// Every polygon of the volume set up for rasterization: the caps too, since both counts are kept,
+// though only z-fail draws them (z-pass needs none, Heidmann). Set up in view space relative to the
+// eye: the edge planes are built from small numbers, and the verdicts do not change when the scene
+// stands far away.
+std::vector<StencilFace> stencil_faces(const ShadowVolume& volume, const Camera& camera, const CameraRays& rays,
+                                       CountRule drawn) {
+    const Camera eye_camera = at_origin(camera);
+    const glm::dmat4 view_from_eye = eye_camera.view_matrix();  // eye-relative world to view: a rotation
+    const glm::dmat4 clip_from_view = eye_camera.infinite_projection_matrix();
+    const PixelDirections pixels(eye_camera, rays.width(), rays.height());
+    struct Counted {
+        const VolumePolygon* polygon;
+        bool drawn;
+    };
+    std::vector<Counted> counted;
     auto add = [&](const std::vector<VolumePolygon>& list, bool is_drawn) {
-        for (VolumePolygon p : list) {
-            p.vertices = translated(std::move(p.vertices), -camera.position);
-            if (std::optional<EyePolygon> seen = seen_from(p, rays.eye(), is_drawn)) {
-                const PixelBox box = pixel_footprint(eye_to_clip, rays, p.vertices);
-                if (box.empty()) continue;
-                polygons.push_back(std::move(*seen));
-                boxes.push_back(box);
-            }
-        }
+        for (const VolumePolygon& p : list) counted.push_back({&p, is_drawn});
     };
     add(volume.quads, true);
-    add(volume.front_cap, drawn == CountRule::zfail);  // z-pass draws no caps (Heidmann)
+    add(volume.front_cap, drawn == CountRule::zfail);
     add(volume.back_cap, drawn == CountRule::zfail);
 
+    std::vector<std::optional<StencilFace>> faces(counted.size());
+    parallel_rows([&](int first, int stride) {  // the polygons shared among the cores like rows
+        HomogeneousPolygon view;
+        for (std::size_t k = first; k < counted.size(); k += stride) {
+            view.clear();
+            for (const glm::dvec4& v : counted[k].polygon->vertices)
+                view.push_back(view_from_eye * (v - glm::dvec4(camera.position * v.w, 0.0)));
+            std::optional<ScreenPolygon> screen = screen_polygon(view, pixels, camera.near);
+            if (!screen) continue;
+            const PixelBox box = pixel_footprint(clip_from_view, rays, view);
+            if (box.empty()) continue;
+            const int m = counted[k].polygon->multiplicity, facing = screen->plane_at_eye > 0.0 ? m : -m;
+            faces[k] = StencilFace{.screen = std::move(*screen),
+                                   .box = box,
+                                   .on_depth_pass = facing,
+                                   .on_depth_fail = -facing,
+                                   .fragments = counted[k].drawn ? m : 0};
+        }
+    });
+    std::vector<StencilFace> out;
+    for (std::optional<StencilFace>& f : faces)
+        if (f) out.push_back(std::move(*f));
+    return out;
+}
+
+// The depth buffer as the stencil pass tests it: per pixel, the largest 1 / view depth a fragment
+// may have and still fail the depth test (lie behind the visible point, within kSameDepth). Where
+// nothing is visible the buffer keeps its clear value, infinity (bound 0); those counts are dropped.
+std::vector<double> depth_fail_bounds(const ReferenceImage& image, const CameraRays& rays) {
+    std::vector<double> bound(image.visible.size(), 0.0);
+    for (std::size_t i = 0; i < bound.size(); ++i)
+        if (image.visible[i]) bound[i] = 1.0 / (rays.view_depth(image.position[i]) * (1.0 - kSameDepth));
+    return bound;
+}
+
+// The first row at or after y0 that the thread taking rows first, first + stride, ... draws.
+int first_row_from(int y0, int first, int stride) { return y0 + ((first - y0) % stride + stride) % stride; }
+
+}  // namespace
+
+StencilCounts count_stencil(const ShadowVolume& volume, const Camera& camera, const ReferenceImage& image,
+                            CountRule drawn) {
+    const CameraRays rays(camera, image.width, image.height);
+    const std::vector<StencilFace> faces = stencil_faces(volume, camera, rays, drawn);
+    const std::vector<double> depth_fail_bound = depth_fail_bounds(image, rays);
     const std::size_t pixels = std::size_t(image.width) * image.height;
     StencilCounts c{std::vector<int>(pixels, 0), std::vector<int>(pixels, 0), std::vector<int>(pixels, 0)};
-    for_footprint_pixels(boxes, image.width, [&](std::size_t k, int x, int y, std::size_t i) {
-        const EyePolygon& p = polygons[k];
-        const std::optional<double> t = crossing(p, rays.direction(x, y));
-        if (!t || *t < camera.near) return;  // missed, or clipped by the near plane
-        if (p.drawn) c.fragments[i] += p.multiplicity;
-        if (!image.visible[i]) return;
-        const bool front = p.plane_at_eye > 0.0;
-        if (*t >= rays.view_depth(image.position[i] - camera.position) * (1.0 - kSameDepth))
-            c.zfail[i] += front ? -p.multiplicity : p.multiplicity;  // depth test fails: behind
-        else
-            c.zpass[i] += front ? p.multiplicity : -p.multiplicity;  // depth test passes: in front
+    // The stencil pass, with depth writes off: every face drawn over the pixel centres it covers,
+    // its fragments counted by the depth test's outcome, z-pass (Heidmann 1991: front faces +1,
+    // back faces -1 where the test passes) and z-fail (Carmack 2000, Everitt and Kilgard 2002: back
+    // faces +1, front faces -1 where it fails) at once. Each thread takes a set of rows, so each
+    // pixel's sums are one thread's.
+    parallel_rows([&](int first, int stride) {
+        for (const StencilFace& f : faces)
+            for (int y = first_row_from(f.box.y0, first, stride); y <= f.box.y1; y += stride) {
+                const Span span = row_span(f.screen, y, f.box.x0, f.box.x1);
+                const double depth_along_row = f.screen.inverse_depth.along_row(y);
+                const std::size_t row = std::size_t(y) * image.width;
+                for (int x = span.first; x <= span.last; ++x) {
+                    const std::size_t i = row + x;
+                    c.fragments[i] += f.fragments;
+                    if (f.screen.inverse_depth.at(x, depth_along_row) <= depth_fail_bound[i])
+                        c.zfail[i] += f.on_depth_fail;  // depth test fails: behind the visible point
+                    else
+                        c.zpass[i] += f.on_depth_pass;  // depth test passes: in front of it
+                }
+            }
     });
+    for (std::size_t i = 0; i < pixels; ++i)
+        if (!image.visible[i]) c.zpass[i] = c.zfail[i] = 0;
     return c;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// The stencil pass on the CPU: along each pixel's eye ray, the volume faces crossed, +1 or -1 by
-// which way each faces the eye, counted in front of the visible point (z-pass, Heidmann) or behind
-// it out to infinity (z-fail, Carmack's reverse). Shadowed where the count is not 0.
+// The stencil pass on the CPU: the volume polygons rasterized at the camera's pixel centres, each
+// fragment +1 or -1 by which way its face looks at the eye, counted where it lies in front of the
+// visible point (z-pass, Heidmann 1991) or behind it out to infinity (z-fail, Carmack's reverse).
+// Shadowed where the count is not 0.
 #include <vector>
 
 #include "reference/exact_shadows.hpp"
@@ -19,11 +20,12 @@ struct StencilCounts {
     std::vector<int> fragments;  // faces the rule draws that the near plane leaves: quads, and caps for z-fail
 };
 
-// Both counts for every visible pixel of `image` (whose size gives the rays), each volume polygon
-// tested exactly against each eye ray it may cover: the edge planes through the eye and the
-// polygon's plane, in homogeneous form, so that vertices at infinity (w = 0) need no special case.
-// A face within a relative 1e-5 of the visible point's depth counts as behind it (a lit face lies
-// on its own front cap). Faces nearer than the near plane are clipped, as on a GPU.
+// Both counts for every visible pixel of `image` (whose size gives the pixels), as a GPU's stencil
+// pass gets them: each volume polygon rasterized in homogeneous coordinates (raster/polygon_spans.hpp,
+// so vertices at infinity, w = 0, need no special case), at pixel centres with the top-left rule
+// (adjacent polygons count a shared edge once), its depth interpolated in 1 / w. A face within a
+// relative 1e-5 of the visible point's depth counts as behind it (a lit face lies on its own front
+// cap). Faces nearer than the near plane are clipped, as on a GPU; the far plane is at infinity.
 StencilCounts count_stencil(const ShadowVolume& volume, const Camera& camera, const ReferenceImage& image,
                             CountRule drawn);
 
