@@ -45,6 +45,16 @@ ShadowMap spot_map() {
     return map;
 }
 
+// Texel coordinates are world x and z exactly (u = x / 64, v = z / 64), and d = 0.5 + y / 10.
+ShadowMap texel_space_map() {
+    ShadowMap map;
+    map.world_to_uvz = glm::transpose(glm::dmat4(1.0 / kResolution, 0.0, 0.0, 0.0,  //
+                                                 0.0, 0.0, 1.0 / kResolution, 0.0,  //
+                                                 0.0, 0.1, 0.0, 0.5,                //
+                                                 0.0, 0.0, 0.0, 1.0));
+    return map;
+}
+
 // Appends the quad a, b, c, d (two triangles sharing the diagonal a-c) as object `object`.
 void add_quad(WorldTriangles& out, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d,
               int object = 0) {
@@ -110,12 +120,7 @@ TEST(RasterOrthographic, CentresOnEdgesFollowTheTopLeftRule) {
 }
 
 TEST(RasterOrthographic, EdgesSharedThroughTexelCentresLeaveNoGap) {
-    // u = x / 64 and v = z / 64, so texel coordinates are world x and z exactly.
-    ShadowMap map;
-    map.world_to_uvz = glm::transpose(glm::dmat4(1.0 / 64, 0.0, 0.0, 0.0,  //
-                                                 0.0, 0.0, 1.0 / 64, 0.0,  //
-                                                 0.0, 0.0, 0.0, 0.5,       //
-                                                 0.0, 0.0, 0.0, 1.0));
+    const ShadowMap map = texel_space_map();
     // Diamonds split along a random diagonal through the centre (32.5, 32.5): rounding puts the
     // centre a hair to either side of the diagonal, yet one of the two triangles must take it.
     std::mt19937 rng(7);
@@ -162,6 +167,11 @@ TEST(RasterOrthographic, KeepsTheNearestCasterAndSkipsNonCasters) {
     EXPECT_NEAR(map.at(42, row), overhead_depth(2.0), 1e-7);
     EXPECT_NEAR(map.at(46, row), overhead_depth(1.0), 1e-7);
     EXPECT_EQ(map.at(55, row), 1.0f);  // only the non-caster is there
+}
+
+TEST(RasterOrthographic, NoCasterLeavesEveryTexelEmpty) {
+    const DepthMap map = rasterize_depth(square(-2, 2, -2, 2, 1.0), {false}, one_map(overhead_map()), kResolution);
+    EXPECT_EQ(covered_count(map), 0);
 }
 
 TEST(RasterPerspective, TriangleStraddlingTheLightIsDrawnOnlyWhereWIsPositive) {
@@ -218,4 +228,152 @@ TEST(RasterLookup, PointsOffTheMapAreLit) {
     const ShadowMap overhead = overhead_map();
     EXPECT_FALSE(in_shadow(full, one_map(overhead), {0.0, 0.0, -4.5}, 0.0));  // v < 0
     EXPECT_TRUE(in_shadow(full, one_map(overhead), {4.0, 0.0, 4.0}, 0.0));    // u = v = 1: the last texel
+}
+
+// ---- The fast rasterizer against a straightforward one ----
+
+namespace {
+
+// The edge function of a -> b at p, evaluated from the lexicographically smaller end, and the
+// top-left rule: what the header promises, written texel by texel.
+double edge_value(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
+    if (b.x < a.x || (b.x == a.x && b.y < a.y)) return -edge_value(b, a, p);
+    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+bool holds(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
+    const double e = edge_value(a, b, p);
+    return e > 0.0 || (e == 0.0 && (b.y < a.y || (b.y == a.y && b.x < a.x)));
+}
+
+// Every texel centre of the map's tile tested against every triangle (each wholly in front of the
+// map, w > 0, so that nothing but the tile clips it), depth by barycentric weights, the least kept.
+DepthMap brute_force_depth(const WorldTriangles& triangles, const ShadowMap& map, int resolution) {
+    DepthMap out{resolution, std::vector<float>(static_cast<std::size_t>(resolution) * resolution, 1.0f)};
+    const glm::ivec2 first = texel_of(map, glm::dvec2(0.0), resolution),
+                     last = texel_of(map, glm::dvec2(1.0), resolution);
+    for (const std::array<int, 3>& corners : triangles.triangles) {
+        std::array<glm::dvec2, 3> p;
+        std::array<double, 3> depth;
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 uvz = world_to_uvz(map, triangles.vertices[corners[k]]);
+            p[k] = texture_uv(map, glm::dvec2(uvz)) * static_cast<double>(resolution);
+            depth[k] = uvz.z;
+        }
+        double area = edge_value(p[0], p[1], p[2]);
+        if (area == 0.0) continue;
+        if (area < 0.0) {  // make it counter-clockwise
+            std::swap(p[1], p[2]);
+            std::swap(depth[1], depth[2]);
+            area = -area;
+        }
+        for (int y = first.y; y <= last.y; ++y)
+            for (int x = first.x; x <= last.x; ++x) {
+                const glm::dvec2 centre(x + 0.5, y + 0.5);
+                if (!holds(p[1], p[2], centre) || !holds(p[2], p[0], centre) || !holds(p[0], p[1], centre)) continue;
+                const double d =
+                    (edge_value(p[1], p[2], centre) * depth[0] + edge_value(p[2], p[0], centre) * depth[1] +
+                     edge_value(p[0], p[1], centre) * depth[2]) /
+                    area;
+                float& texel = out.depth[static_cast<std::size_t>(y) * resolution + x];
+                texel = std::min(texel, static_cast<float>(std::max(0.0, d)));
+            }
+    }
+    return out;
+}
+
+// The same texels covered, and the same depths but for the float rounding of the interpolation.
+void expect_same_map(const DepthMap& actual, const DepthMap& expected) {
+    ASSERT_EQ(actual.depth.size(), expected.depth.size());
+    for (int y = 0; y < actual.resolution; ++y)
+        for (int x = 0; x < actual.resolution; ++x) {
+            ASSERT_EQ(covered(actual, x, y), covered(expected, x, y)) << x << ", " << y;
+            ASSERT_NEAR(actual.at(x, y), expected.at(x, y), 2e-7) << x << ", " << y;
+        }
+}
+
+void add_triangle(WorldTriangles& out, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const int base = static_cast<int>(out.vertices.size());
+    out.vertices.insert(out.vertices.end(), {a, b, c});
+    out.triangles.push_back({base, base + 1, base + 2});
+    out.object.push_back(0);
+}
+
+// Triangles of every size from a fraction of a texel to the whole map, slivers among them, both
+// windings, at random heights, under texel_space_map(): `place` gives a vertex's texel coordinate.
+template <class Place>
+WorldTriangles random_triangles(int count, unsigned seed, Place&& place) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    WorldTriangles out;
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec2 centre(kResolution * unit(rng), kResolution * unit(rng));
+        const double size = 0.3 * std::pow(200.0, unit(rng));  // 0.3 .. 60 texels
+        std::array<glm::dvec3, 3> corner;
+        for (glm::dvec3& c : corner) {
+            const glm::dvec2 p = place(centre + size * glm::dvec2(unit(rng) - 0.5, unit(rng) - 0.5));
+            c = {p.x, 4.0 * unit(rng) - 2.0, p.y};
+        }
+        if (i % 5 == 0) corner[2] = glm::mix(corner[0], corner[1], unit(rng)) + glm::dvec3(0.01, 0.0, 0.0);  // a sliver
+        add_triangle(out, corner[0], corner[1], corner[2]);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(RasterAgreement, GridAlignedTrianglesMatchATexelByTexelReference) {
+    // Vertices on the half-texel grid inside the map: texel centres fall on edges and vertices
+    // everywhere, so each row's run ends are settled exactly at ties.
+    const auto on_grid = [](const glm::dvec2& p) {
+        return glm::clamp(glm::round(2.0 * p) / 2.0, glm::dvec2(0.0), glm::dvec2(kResolution));
+    };
+    const WorldTriangles triangles = random_triangles(300, 11, on_grid);
+    const ShadowMap map = texel_space_map();
+    expect_same_map(rasterize_depth(triangles, {true}, one_map(map), kResolution),
+                    brute_force_depth(triangles, map, kResolution));
+}
+
+TEST(RasterAgreement, TrianglesCutByTheTileMatchTheReferenceInsideIt) {
+    // Off-grid vertices over twice the map, in a perspective map's tile: most triangles reach past
+    // the tile's edges and are clipped there (new edges along the tile's border, between centres).
+    ShadowMap map = spot_map();
+    map.viewport = {0.25, 0.5, 0.75, 1.0};
+    const auto in_front = [](const glm::dvec2& p) { return 3.0 * p - glm::dvec2(kResolution); };
+    WorldTriangles triangles = random_triangles(300, 12, in_front);
+    for (glm::dvec3& v : triangles.vertices)  // texel-space x, z to the light's view, 1.5 .. 2.5 in front of it
+        v = glm::dvec3(v.x / kResolution - 0.5, v.z / kResolution - 0.5, -1.0) * (2.0 + 0.25 * v.y);
+    expect_same_map(rasterize_depth(triangles, {true}, one_map(map), kResolution),
+                    brute_force_depth(triangles, map, kResolution));
+}
+
+TEST(RasterSharedEdges, EachCentreOnASharedDiagonalTakesItsOwnersDepthAlone) {
+    // A square split along its diagonal, which runs through the centres (k + 0.5, k + 0.5): the lower
+    // triangle's diagonal runs toward lower v (counter-clockwise), so it owns them, whether it lies
+    // nearer or farther than the upper one; a centre drawn by both would take the nearer depth.
+    for (const auto& [lower_y, upper_y] : {std::pair{1.0, -1.0}, std::pair{-1.0, 1.0}}) {
+        WorldTriangles quad;
+        add_triangle(quad, {8, lower_y, 8}, {40, lower_y, 8}, {40, lower_y, 40});
+        add_triangle(quad, {8, upper_y, 8}, {40, upper_y, 40}, {8, upper_y, 40});
+        const DepthMap map = rasterize_depth(quad, {true}, one_map(texel_space_map()), kResolution);
+        const float lower = 0.5f + 0.1f * static_cast<float>(lower_y),
+                    upper = 0.5f + 0.1f * static_cast<float>(upper_y);
+        for (int y = 8; y < 40; ++y)
+            for (int x = 8; x < 40; ++x) ASSERT_FLOAT_EQ(map.at(x, y), y <= x ? lower : upper) << x << ", " << y;
+    }
+}
+
+TEST(RasterInvariance, MovingTheSceneFarAndScalingItWithItsMapChangesNothing) {
+    // The map follows the scene: world' = scale * world + offset, world_to_uvz' = world_to_uvz * world_from_world'.
+    const auto anywhere = [](const glm::dvec2& p) { return p; };
+    const WorldTriangles near = random_triangles(200, 13, anywhere);
+    const glm::dvec3 offset(3.0e5, -2.0e5, 7.0e5);
+    const double scale = 1000.0;
+    WorldTriangles far = near;
+    for (glm::dvec3& v : far.vertices) v = scale * v + offset;
+    ShadowMap moved = texel_space_map();
+    moved.world_to_uvz = moved.world_to_uvz * glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 / scale)) *
+                         glm::translate(glm::dmat4(1.0), -offset);
+    expect_same_map(rasterize_depth(far, {true}, one_map(moved), kResolution),
+                    rasterize_depth(near, {true}, one_map(texel_space_map()), kResolution));
 }

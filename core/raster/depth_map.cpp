@@ -1,5 +1,6 @@
-// Triangles are clipped in homogeneous space, divided by w, and sampled at texel centres with edge
-// functions; d / w is affine in (u / w, v / w), so screen-space interpolation of it is exact.
+// Triangles are clipped in homogeneous space, divided by w, and filled row by row at texel centres:
+// each row's run of covered texels comes from the edge functions, and the depth is the plane through
+// the divided vertices (d / w is affine in (u / w, v / w), so screen-space interpolation of it is exact).
 #include "raster/depth_map.hpp"
 
 #include "geometry/homogeneous_clip.hpp"
@@ -10,7 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <thread>
+#include <numeric>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -21,18 +23,64 @@ constexpr double kMinRelativeW = 1e-9;  // clipped w stays above this fraction o
 
 using Polygon = HomogeneousPolygon;  // (u, v, d_pre, w)
 
-// The part of a polygon with w > 0 and 0 <= u, v <= w: in front of the map's centre and on it.
-// The w plane sits a hair above 0, relative to the triangle's scale, so the division stays finite.
-Polygon clip_to_map(Polygon polygon) {
+// ---- Clipping: the part of a caster on the map ----
+
+// The half-spaces of the map: w > 0 and 0 <= u, v <= w, in front of the map's centre and on it. The
+// w plane sits a hair above 0, relative to the polygon's scale, so the division stays finite.
+std::array<ClipPlane, 5> map_planes(double min_w) {
+    return {
+        {{{0, 0, 0, 1}, min_w}, {{1, 0, 0, 0}, 0.0}, {{-1, 0, 0, 1}, 0.0}, {{0, 1, 0, 0}, 0.0}, {{0, -1, 0, 1}, 0.0}}};
+}
+
+template <class Vertices>
+double min_w_of(const Vertices& vertices) {
     double largest_w = 0.0;
-    for (const glm::dvec4& h : polygon) largest_w = std::max(largest_w, std::abs(h.w));
-    const double min_w = kMinRelativeW * largest_w;
+    for (const glm::dvec4& h : vertices) largest_w = std::max(largest_w, std::abs(h.w));
+    return kMinRelativeW * largest_w;
+}
+
+Polygon clip_to_map(Polygon polygon) {
+    const double min_w = min_w_of(polygon);
     if (!(min_w > 0.0)) return {};
-    const ClipPlane planes[] = {{{0, 0, 0, 1}, min_w}, {{1, 0, 0, 0}, 0.0}, {{-1, 0, 0, 1}, 0.0},
-                                {{0, 1, 0, 0}, 0.0},   {{0, -1, 0, 1}, 0.0}};
-    for (const ClipPlane& plane : planes) polygon = clip(polygon, plane);
+    for (const ClipPlane& plane : map_planes(min_w)) polygon = clip(polygon, plane);
     return polygon;
 }
+
+// What clip_to_map does to a triangle: keeps it whole (every vertex inside every half-space), removes
+// it (all three outside one), or cuts it. Decided with the distances clip() computes, so that the two
+// quick answers are exactly what clipping would give, without making a polygon.
+enum class Clipping { keeps, removes, cuts };
+
+Clipping clipping_of(const std::array<glm::dvec4, 3>& triangle) {
+    const double min_w = min_w_of(triangle);
+    if (!(min_w > 0.0)) return Clipping::removes;
+    bool whole = true;
+    for (const ClipPlane& plane : map_planes(min_w)) {
+        int outside = 0;
+        for (const glm::dvec4& h : triangle) outside += !(glm::dot(plane.normal, h) - plane.offset >= 0.0);
+        if (outside == 3) return Clipping::removes;
+        whole = whole && outside == 0;
+    }
+    return whole ? Clipping::keeps : Clipping::cuts;
+}
+
+// Every vertex under the map, projected once for all the triangles that share it: homogeneous
+// (u, v, d_pre, w) and the side of a paraboloid's plane (1 for other maps).
+struct MapVertices {
+    std::vector<glm::dvec4> homogeneous;
+    std::vector<double> side;
+};
+
+MapVertices map_vertices(const std::vector<glm::dvec3>& world, const ShadowMap& map) {
+    MapVertices out{.homogeneous = std::vector<glm::dvec4>(world.size()), .side = std::vector<double>(world.size())};
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        out.homogeneous[i] = map_homogeneous(map, world[i]);
+        out.side[i] = hemisphere_side(map, world[i]);
+    }
+    return out;
+}
+
+// ---- Division: screen triangles ----
 
 // A vertex after division: position in texels of the texture, depth in map units.
 struct ScreenVertex {
@@ -40,9 +88,42 @@ struct ScreenVertex {
     double depth;
 };
 
+using ScreenTriangle = std::array<ScreenVertex, 3>;
+
 ScreenVertex to_screen(const glm::dvec4& h, const ShadowMap& map, int resolution) {
     return {texture_uv(map, glm::dvec2(h.x, h.y) / h.w) * static_cast<double>(resolution), h.z / h.w};
 }
+
+// Appends the part of one caster triangle on the map, as a fan of screen triangles. A paraboloid map
+// first cuts it at its hemisphere's plane, where the plane distance interpolated along the projected
+// edges crosses 0 (as gl_ClipDistance does). Most triangles are wholly on the map or wholly off it
+// and pass without a polygon.
+void add_on_map(const std::array<int, 3>& corners, const MapVertices& vertices, const ShadowMap& map, int resolution,
+                std::vector<ScreenTriangle>& out) {
+    std::array<glm::dvec4, 3> triangle;
+    std::array<double, 3> side;
+    int behind = 0;
+    for (int k = 0; k < 3; ++k) {
+        triangle[k] = vertices.homogeneous[corners[k]];
+        side[k] = vertices.side[corners[k]];
+        behind += !(side[k] >= 0.0);
+    }
+    if (behind == 3) return;
+    const Clipping clipping = behind == 0 ? clipping_of(triangle) : Clipping::cuts;
+    if (clipping == Clipping::removes) return;
+    if (clipping == Clipping::keeps) {
+        out.push_back({to_screen(triangle[0], map, resolution), to_screen(triangle[1], map, resolution),
+                       to_screen(triangle[2], map, resolution)});
+        return;
+    }
+    const Polygon on_hemisphere =
+        clip_where(Polygon(triangle.begin(), triangle.end()), [&](std::size_t i) { return side[i]; });
+    std::vector<ScreenVertex> screen;
+    for (const glm::dvec4& h : clip_to_map(on_hemisphere)) screen.push_back(to_screen(h, map, resolution));
+    for (std::size_t k = 1; k + 1 < screen.size(); ++k) out.push_back({screen[0], screen[k], screen[k + 1]});
+}
+
+// ---- Filling: texel centres covered, row by row ----
 
 // The texels of one map's tile: first and last column and row.
 struct TexelRange {
@@ -53,94 +134,202 @@ TexelRange tile_texels(const ShadowMap& map, int resolution) {
     return {texel_of(map, glm::dvec2(0.0), resolution), texel_of(map, glm::dvec2(1.0), resolution)};
 }
 
-// Twice the signed area of (a, b, p): positive when p lies left of a -> b. Always evaluated from
-// the lexicographically smaller endpoint, so that the two triangles sharing an edge get exactly
-// opposite values and no texel centre on it is lost to rounding.
-double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
-    if (b.x < a.x || (b.x == a.x && b.y < a.y)) return -edge(b, a, p);
-    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+// Runs of texels [first, last] (empty when last < first).
+struct Run {
+    int first, last;
+};
+
+Run intersection(const Run& a, const Run& b) { return {std::max(a.first, b.first), std::min(a.last, b.last)}; }
+
+// First and last texel whose centre (i + 0.5) lies in [lo, hi], within `within`.
+Run texels_between(double lo, double hi, const Run& within) {
+    return intersection({static_cast<int>(std::ceil(lo - 0.5)), static_cast<int>(std::floor(hi - 0.5))}, within);
 }
 
-// The top-left rule: a centre exactly on an edge belongs to the one triangle (of the two sharing
-// it, both counter-clockwise) along which the edge runs toward lower v, or along v toward lower u.
-bool owns_edge(const glm::dvec2& a, const glm::dvec2& b) { return b.y < a.y || (b.y == a.y && b.x < a.x); }
+// A guess at a texel index, as an int within [first, last] (NaN gives first); the caller's walk settles it.
+int texel_near(double x, int first, int last) { return x >= first ? (x <= last ? static_cast<int>(x) : last) : first; }
 
-bool inside(double e, const glm::dvec2& a, const glm::dvec2& b) { return e > 0.0 || (e == 0.0 && owns_edge(a, b)); }
+bool lexicographically_less(const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
-// First and last texel whose centre (i + 0.5) lies in [lo, hi], within [first, last].
-std::pair<int, int> texel_span(double lo, double hi, int first, int last) {
-    return {std::max(first, static_cast<int>(std::ceil(lo - 0.5))), std::min(last, static_cast<int>(std::floor(hi - 0.5)))};
-}
+// The directed edge a -> b of a counter-clockwise triangle and the texel centres on its inner side.
+class Edge {
+public:
+    Edge(const glm::dvec2& a, const glm::dvec2& b)
+        : reversed_(lexicographically_less(b, a)),
+          from_(reversed_ ? b : a),
+          along_(reversed_ ? a - b : b - a),
+          rise_(a.y - b.y),
+          x_per_y_((b.x - a.x) / (b.y - a.y)),
+          owns_centres_on_it_(b.y < a.y || (b.y == a.y && b.x < a.x)) {}
 
-void draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, const TexelRange& tile, DepthMap& map) {
-    double area = edge(a.p, b.p, c.p);
-    if (area == 0.0) return;
-    if (area < 0.0) {  // both windings are drawn: make it counter-clockwise
-        std::swap(b, c);
-        area = -area;
+    // Twice the signed area of (a, b, p): positive when p lies left of a -> b.
+    double at(const glm::dvec2& p) const { return at_x(along_.x * (p.y - from_.y), p.x); }
+
+    // The texels of row y within `row` whose centres the edge holds. Along a row the rounded edge
+    // function is monotone in x (every rounded operation is), rising where the edge runs toward lower
+    // v: the held texels are the row's end on one side of a crossing. The crossing in exact arithmetic
+    // is a guess a rounding (and a truncation) away from it; a step or none either way settles it with
+    // the edge function itself, so the run is exactly the centres a test of every texel takes.
+    Run held(int y, const Run& row) const {
+        const double centre_y = y + 0.5;
+        const double along_row = along_.x * (centre_y - from_.y);  // at(p)'s part constant along the row
+        const auto holds = [&](int x) {
+            const double e = at_x(along_row, x + 0.5);
+            return e > 0.0 || (e == 0.0 && owns_centres_on_it_);
+        };
+        if (rise_ == 0.0) return holds(row.first) ? row : Run{row.first, row.first - 1};
+        const double crossing = from_.x + (centre_y - from_.y) * x_per_y_ - 0.5;  // in texel indices
+        if (rise_ > 0.0) {                                                        // held from the crossing on
+            int x = texel_near(crossing + 1.0, row.first, row.last + 1);
+            while (x > row.first && holds(x - 1)) --x;
+            while (x <= row.last && !holds(x)) ++x;
+            return {x, row.last};
+        }
+        int x = texel_near(crossing, row.first - 1, row.last);
+        while (x < row.last && holds(x + 1)) ++x;
+        while (x >= row.first && !holds(x)) --x;
+        return {row.first, x};
     }
+
+private:
+    // at(p) from its part along_row, constant along p's row. Evaluated from the lexicographically
+    // smaller endpoint (`from_`, along `along_`), so that the two triangles sharing an edge get exactly
+    // opposite values and no texel centre on it is lost to rounding.
+    double at_x(double along_row, double x) const {
+        const double e = along_row - along_.y * (x - from_.x);
+        return reversed_ ? -e : e;
+    }
+
+    bool reversed_;
+    glm::dvec2 from_, along_;
+    double rise_;     // of the edge function per unit of x
+    double x_per_y_;  // the edge's inverse slope, for the guess
+    // The top-left rule: a centre exactly on an edge belongs to the one triangle (of the two sharing
+    // it, both counter-clockwise) along which the edge runs toward lower v, or along v toward lower u.
+    bool owns_centres_on_it_;
+};
+
+// The depth over the screen: the plane through the three vertices, d = at_origin + per_x x + per_y y.
+struct DepthPlane {
+    double at_origin, per_x, per_y;
+};
+
+DepthPlane depth_plane(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    const glm::dvec2 ab = b.p - a.p, ac = c.p - a.p;
+    const double ab_depth = b.depth - a.depth, ac_depth = c.depth - a.depth;
+    const double determinant = ab.x * ac.y - ab.y * ac.x;  // Cramer's rule for the two slopes
+    const double per_x = (ab_depth * ac.y - ac_depth * ab.y) / determinant;
+    const double per_y = (ac_depth * ab.x - ab_depth * ac.x) / determinant;
+    return {a.depth - per_x * a.p.x - per_y * a.p.y, per_x, per_y};
+}
+
+// The least depth so far per texel of one row: casters before the near plane (d < 0) are stored as 0.
+void fill_run(float* row, const Run& run, const DepthPlane& plane, double centre_y) {
+    const double at_row = plane.at_origin + plane.per_y * centre_y;
+    for (int x = run.first; x <= run.last; ++x) {
+        const float depth = static_cast<float>(at_row + plane.per_x * (x + 0.5));
+        row[x] = std::min(row[x], std::max(0.0f, depth));  // clamped after rounding: the loop vectorizes
+    }
+}
+
+// A screen triangle ready to fill: counter-clockwise (both windings are drawn) and the texels of its
+// bounding box in the tile.
+struct FillTriangle {
+    ScreenTriangle corners;
+    Run rows, columns;
+};
+
+// Appends the screen triangle, ready to fill, if it has an area and a texel centre in its box in the tile.
+void add_to_fill(ScreenTriangle t, const TexelRange& tile, std::vector<FillTriangle>& out) {
+    const auto& [a, b, c] = t;
     const glm::dvec2 lo = glm::min(a.p, glm::min(b.p, c.p)), hi = glm::max(a.p, glm::max(b.p, c.p));
-    const auto [x0, x1] = texel_span(lo.x, hi.x, tile.first.x, tile.last.x);
-    const auto [y0, y1] = texel_span(lo.y, hi.y, tile.first.y, tile.last.y);
-    for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-            const glm::dvec2 p(x + 0.5, y + 0.5);
-            const double ea = edge(b.p, c.p, p), eb = edge(c.p, a.p, p), ec = edge(a.p, b.p, p);
-            if (!inside(ea, b.p, c.p) || !inside(eb, c.p, a.p) || !inside(ec, a.p, b.p)) continue;
-            const double depth = (ea * a.depth + eb * b.depth + ec * c.depth) / area;  // barycentric
-            float& texel = map.depth[static_cast<std::size_t>(y) * map.resolution + x];
-            texel = std::min(texel, static_cast<float>(std::max(0.0, depth)));
-        }
+    const Run rows = texels_between(lo.y, hi.y, {tile.first.y, tile.last.y});
+    const Run columns = texels_between(lo.x, hi.x, {tile.first.x, tile.last.x});
+    const double area = Edge(a.p, b.p).at(c.p);
+    if (rows.last < rows.first || columns.last < columns.first || area == 0.0) return;
+    if (area < 0.0) std::swap(t[1], t[2]);
+    out.push_back({t, rows, columns});
 }
 
-// A paraboloid map's projected triangle: the part on its hemisphere's side, cut where the plane
-// distance, interpolated along the projected edges, crosses 0 (as gl_ClipDistance does).
-Polygon on_hemisphere(const ShadowMap& map, const std::array<glm::dvec3, 3>& world, const Polygon& projected) {
-    const std::array<double, 3> side{hemisphere_side(map, world[0]), hemisphere_side(map, world[1]),
-                                     hemisphere_side(map, world[2])};
-    return clip_where(projected, [&](std::size_t i) { return side[i]; });
-}
-
-// The map's caster triangles after clipping and division, as fans of screen vertices.
-std::vector<std::array<ScreenVertex, 3>> screen_triangles(const WorldTriangles& triangles,
-                                                          const std::vector<bool>& casts_per_object,
-                                                          const ShadowMap& map, int resolution) {
-    std::vector<std::array<ScreenVertex, 3>> out;
-    for (std::size_t i = 0; i < triangles.triangles.size(); ++i) {
-        if (!casts_per_object.at(triangles.object[i])) continue;
-        std::array<glm::dvec3, 3> world;
-        std::array<glm::dvec4, 3> homogeneous;
-        for (int k = 0; k < 3; ++k) {
-            world[k] = triangles.vertices[triangles.triangles[i][k]];
-            homogeneous[k] = map_homogeneous(map, world[k]);
+// The map's caster triangles after clipping and division, ready to fill; the cores take them in turn
+// (the least depths do not depend on the order they are drawn in).
+std::vector<FillTriangle> fill_triangles(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
+                                         const ShadowMap& map, const TexelRange& tile, int resolution) {
+    const MapVertices vertices = map_vertices(triangles.vertices, map);
+    std::vector<std::vector<FillTriangle>> taken(row_threads());
+    parallel_rows([&](int first, int stride) {
+        std::vector<ScreenTriangle> screen;
+        for (std::size_t i = first; i < triangles.triangles.size(); i += stride) {
+            if (!casts_per_object.at(triangles.object[i])) continue;
+            screen.clear();
+            add_on_map(triangles.triangles[i], vertices, map, resolution, screen);
+            for (const ScreenTriangle& t : screen) add_to_fill(t, tile, taken[first]);
         }
-        Polygon polygon(homogeneous.begin(), homogeneous.end());
-        if (map.projection == Projection::paraboloid) polygon = on_hemisphere(map, world, polygon);
-        polygon = clip_to_map(std::move(polygon));
-        std::vector<ScreenVertex> screen;
-        for (const glm::dvec4& h : polygon) screen.push_back(to_screen(h, map, resolution));
-        for (std::size_t k = 1; k + 1 < screen.size(); ++k) out.push_back({screen[0], screen[k], screen[k + 1]});
-    }
+    });
+    std::vector<FillTriangle> out;
+    for (const std::vector<FillTriangle>& part : taken) out.insert(out.end(), part.begin(), part.end());
     return out;
 }
 
-// The triangles filled on every core, each thread a band of the tile's rows: every texel is written
-// by one thread, and its least depth does not depend on the order, so the result is the same.
+// The tile's rows in bands of kBandRows: a band of a 2048-texel row is 128 KiB, so it stays in a
+// core's cache while every triangle that meets it is drawn, instead of each triangle's rows coming
+// from memory again.
+constexpr int kBandRows = 16;
+
+// The triangles meeting each band, in drawing order, binned once by a counting sort: band b's are
+// triangle[start[b]] .. triangle[start[b + 1] - 1].
+struct Bands {
+    Run tile_rows;
+    std::vector<int> start, triangle;
+
+    int count() const { return static_cast<int>(start.size()) - 1; }
+    int of_row(int y) const { return (y - tile_rows.first) / kBandRows; }
+    Run rows(int band) const {
+        const int first = tile_rows.first + band * kBandRows;
+        return intersection({first, first + kBandRows - 1}, tile_rows);
+    }
+    std::span<const int> triangles(int band) const {
+        return std::span(triangle).subspan(start[band], start[band + 1] - start[band]);
+    }
+};
+
+Bands bin_by_band(const std::vector<FillTriangle>& triangles, const Run& tile_rows) {
+    Bands bands{.tile_rows = tile_rows};
+    bands.start.assign(bands.of_row(tile_rows.last) + 2, 0);
+    for (const FillTriangle& t : triangles)
+        for (int b = bands.of_row(t.rows.first); b <= bands.of_row(t.rows.last); ++b) ++bands.start[b + 1];
+    std::partial_sum(bands.start.begin(), bands.start.end(), bands.start.begin());
+    bands.triangle.resize(bands.start.back());
+    std::vector<int> next(bands.start.begin(), bands.start.end() - 1);
+    for (int i = 0; i < static_cast<int>(triangles.size()); ++i)
+        for (int b = bands.of_row(triangles[i].rows.first); b <= bands.of_row(triangles[i].rows.last); ++b)
+            bands.triangle[next[b]++] = i;
+    return bands;
+}
+
+// The triangle's texels in `rows`, each row's run cut from its bounding box by the three edges.
+void draw_rows(const FillTriangle& triangle, const Run& rows, DepthMap& map) {
+    const auto& [a, b, c] = triangle.corners;
+    const Edge edges[] = {{b.p, c.p}, {c.p, a.p}, {a.p, b.p}};
+    const DepthPlane plane = depth_plane(a, b, c);
+    for (int y = rows.first; y <= rows.last; ++y) {
+        Run run = triangle.columns;
+        for (const Edge& e : edges) run = intersection(run, e.held(y, run));
+        fill_run(&map.depth[static_cast<std::size_t>(y) * map.resolution], run, plane, y + 0.5);
+    }
+}
+
+// The triangles filled on every core, the bands interleaved among them: every texel is written by
+// one thread, and its least depth does not depend on the order, so the result is the same.
 void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object, const ShadowMap& map,
               DepthMap& out) {
     const TexelRange tile = tile_texels(map, out.resolution);
-    const std::vector<std::array<ScreenVertex, 3>> screen =
-        screen_triangles(triangles, casts_per_object, map, out.resolution);
-    const int rows = tile.last.y - tile.first.y + 1, bands = std::max(1, std::min(row_threads(), rows));
-    std::vector<std::thread> workers;
-    for (int b = 0; b < bands; ++b)
-        workers.emplace_back([&, b] {
-            TexelRange band = tile;
-            band.first.y = tile.first.y + rows * b / bands;
-            band.last.y = tile.first.y + rows * (b + 1) / bands - 1;
-            for (const std::array<ScreenVertex, 3>& t : screen) draw_triangle(t[0], t[1], t[2], band, out);
-        });
-    for (std::thread& w : workers) w.join();
+    const std::vector<FillTriangle> fill = fill_triangles(triangles, casts_per_object, map, tile, out.resolution);
+    const Bands bands = bin_by_band(fill, {tile.first.y, tile.last.y});
+    parallel_rows([&](int first, int stride) {
+        for (int b = first; b < bands.count(); b += stride)
+            for (int i : bands.triangles(b)) draw_rows(fill[i], intersection(bands.rows(b), fill[i].rows), out);
+    });
 }
 
 }  // namespace
