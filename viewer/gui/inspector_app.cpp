@@ -21,11 +21,15 @@ int run_inspector(int argc, char** argv, const InspectorOptions& options) {
     window.show();
     QApplication::processEvents();  // lay out first: the panels draw at their size
     window.open_file(QString::fromStdString(options.scene_file));
+    QTimer settled;  // the screenshot once the scene is computed and every panel drawn
     if (!options.screenshot.empty()) {
-        QTimer::singleShot(500, &window, [&] {
+        settled.setInterval(100);
+        QObject::connect(&settled, &QTimer::timeout, &window, [&] {
+            if (window.computing()) return;
             const bool ok = window.grab().save(QString::fromStdString(options.screenshot));
             QApplication::exit(ok ? 0 : 1);
         });
+        settled.start();
     }
     return QApplication::exec();
 }

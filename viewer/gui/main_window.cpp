@@ -19,6 +19,7 @@
 #include <QStatusBar>
 #include <QTime>
 #include <QTimer>
+#include <algorithm>
 #include <fstream>
 #include <utility>
 #include <vtkOpenGLRenderWindow.h>
@@ -407,21 +408,32 @@ void MainWindow::move_light_to(const glm::dvec3& point) {
     recompute();
 }
 
-// One panel per turn of the event loop: the GUI thread answers between two (a drawing under a
-// software OpenGL takes tens of milliseconds), and a panel not yet drawn when a newer inspection
-// lands is drawn from that one.
+// Every panel from the inspection shown.
 void MainWindow::redraw() {
-    const bool drawing = !undrawn_.empty();
-    undrawn_.assign(panels_.begin(), panels_.end());
-    if (!drawing) QTimer::singleShot(0, this, &MainWindow::redraw_next_panel);
+    for (ViewPanel* panel : panels_) redraw(panel);
+}
+
+// Queued: building a panel's view and drawing it are each one turn of the event loop, one panel
+// after another, so that the GUI thread answers between them (each takes tens of milliseconds for
+// a town under a software OpenGL). A panel still queued when a newer inspection lands is built
+// from that one.
+void MainWindow::redraw(ViewPanel* panel) {
+    const bool idle = undrawn_.empty();
+    if (std::find(undrawn_.begin(), undrawn_.end(), panel) == undrawn_.end()) undrawn_.push_back(panel);
+    if (idle) QTimer::singleShot(1, this, &MainWindow::redraw_next_panel);
 }
 
 void MainWindow::redraw_next_panel() {
     if (undrawn_.empty()) return;
     ViewPanel* panel = undrawn_.front();
-    undrawn_.erase(undrawn_.begin());
-    redraw(panel);
-    if (!undrawn_.empty()) QTimer::singleShot(0, this, &MainWindow::redraw_next_panel);
+    if (panel->drawing_pending()) {
+        panel->draw();
+        ++drawings_;
+    } else {
+        build_view_of(panel);
+    }
+    if (!panel->drawing_pending()) undrawn_.erase(undrawn_.begin());
+    if (!undrawn_.empty()) QTimer::singleShot(1, this, &MainWindow::redraw_next_panel);
 }
 
 ViewOptions MainWindow::view_options() const {
@@ -431,7 +443,7 @@ ViewOptions MainWindow::view_options() const {
     return options;
 }
 
-void MainWindow::redraw(ViewPanel* panel) {
+void MainWindow::build_view_of(ViewPanel* panel) {
     if (!inspection_) return;
     try {
         for (const std::string& note : panel->show(*inspection_, view_options()).notes)

@@ -58,6 +58,9 @@ public:
     const Scene& scene() const { return scene_; }
     const Inspection* inspection() const { return inspection_.get(); }  // the one the views show
     bool computing() const;  // a change's inspection has not landed, or not every panel is drawn from it
+    // How many times a panel has been drawn (rendered by OpenGL) so far: what the GUI thread spends
+    // on drawing, apart from computing, can be told apart (tests/gui/window_drag_test.cpp).
+    int drawings() const { return drawings_; }
     ControlsPanel* controls() const { return controls_; }
     StepPlayer* steps() const { return steps_; }
     PlotPanel* plot() const { return plot_; }
@@ -92,6 +95,7 @@ private:
     void redraw();
     void redraw(ViewPanel* panel);
     void redraw_next_panel();
+    void build_view_of(ViewPanel* panel);
     void message(const QString& text, bool error);
     void fit_messages(int lines);
     void open_dialog();
@@ -130,7 +134,8 @@ private:
     const char* aspect_source_ = "";  // where the newest change's camera aspect came from
     QTimer* progress_timer_;          // while computing: the progress line after 100 ms
     QProgressBar* progress_bar_;
-    std::vector<ViewPanel*> undrawn_;  // the panels still to draw from the inspection shown
+    int drawings_ = 0;
+    std::vector<ViewPanel*> undrawn_;  // the panels still to build and draw from the inspection shown
     ControlsPanel* controls_;
     ScenePanel* scene_panel_;
     QAction* save_scene_ = nullptr;

@@ -4,6 +4,8 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QImage>
+#include <QTimer>
+#include <utility>
 #include <QVBoxLayout>
 #include <glm/gtc/type_ptr.hpp>
 #include <tuple>
@@ -191,8 +193,7 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
         window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleTrackballCamera>());
     handles_.clear();
     if (view() == ViewKind::world) add_world_handles(inspection);
-    widget_->renderWindow()->Render();
-    widget_->update();
+    draw_pending_ = true;
     return report;
 }
 
@@ -271,7 +272,14 @@ void ViewPanel::letterbox(vtkRenderer* renderer, const Camera& camera) {
     renderer->AddObserver(vtkCommand::StartEvent, fit);
 }
 
+void ViewPanel::draw() {
+    if (!std::exchange(draw_pending_, false)) return;
+    widget_->renderWindow()->Render();
+    widget_->update();
+}
+
 RgbImage ViewPanel::grab() {
+    draw();
     const QImage frame = widget_->grabFramebuffer().convertToFormat(QImage::Format_RGB888);
     RgbImage image(frame.width(), frame.height());
     for (int y = 0; y < frame.height(); ++y)

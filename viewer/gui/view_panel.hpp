@@ -35,9 +35,11 @@ public:
     QSize drawing_size() const;  // the VTK widget's, without the choosers
     // `options` completed by the panel's choosers and size, for a camera of `aspect`: what show draws with.
     ViewOptions options_for(const ViewOptions& options, double aspect) const;
-    // Redraws from the inspection; returns what the view could not draw.
+    // Builds the view from the inspection, to be drawn by draw(); returns what the view could not draw.
     ViewReport show(const Inspection& inspection, const ViewOptions& options);
-    RgbImage grab();  // what the panel shows now
+    void draw();  // the view built last, rendered (each of the two takes a turn of the window's event loop)
+    bool drawing_pending() const { return draw_pending_; }
+    RgbImage grab();  // what the panel shows now (drawn first if a drawing is pending)
 
 signals:
     void viewChosen();
@@ -70,6 +72,7 @@ private:
     QVTKOpenGLNativeWidget* widget_;
     vtkGenericOpenGLRenderWindow* window_;
     vtkRenderer* scene_renderer_ = nullptr;  // the view's own, the first of the window's renderers
+    bool draw_pending_ = false;
     glm::dvec3 camera_origin_{0.0};          // the Camera view's coordinates are relative to it
 };
 
