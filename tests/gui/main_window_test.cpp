@@ -390,6 +390,38 @@ private slots:
         QVERIFY2(same_map(), "the inspection shown stays");
     }
 
+    // An engine's camera written as JSON (OpenGL's conventions) replaces the scene's: the camera
+    // computed with is the one written, to 1e-9; a file without a projection is named, the camera stays.
+    void anImportedCameraReplacesTheScenes() {
+        Camera engine = window_->scene().camera;
+        engine.position = {3.0, 4.0, 9.0};
+        engine.target = {0.5, 0.0, -1.0};
+        engine.fov_y_deg = 40.0;
+        engine.near = 0.25, engine.far = 60.0;
+        const auto rows = [](const glm::dmat4& m) {
+            Json out = Json::array();
+            for (int r = 0; r < 4; ++r) out.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
+            return out;
+        };
+        QTemporaryDir dir;
+        const QString file = dir.filePath("camera.json");
+        Json root;
+        root["camera"] = {{"view", rows(engine.view_matrix())}, {"projection", rows(engine.projection_matrix())}};
+        std::ofstream(file.toStdString()) << root.dump();
+        window_->import_camera_matrices(file, {});
+        QVERIFY(settled(*window_));
+        const Camera& used = window_->inspection()->scene.camera;
+        QVERIFY2(glm::length(used.position - engine.position) < 1e-9, "the camera's position");
+        QVERIFY(glm::length(used.view_direction() - engine.view_direction()) < 1e-9);
+        QVERIFY(std::abs(used.fov_y_deg - 40.0) < 1e-9 && std::abs(used.near - 0.25) < 1e-9 && std::abs(used.far - 60.0) < 1e-9);
+        const QString bad = dir.filePath("view_only.json");
+        std::ofstream(bad.toStdString()) << R"({"camera": {"view": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}})";
+        window_->import_camera_matrices(bad, {});
+        QVERIFY(settled(*window_));
+        QVERIFY2(window_->last_message().contains("view_only.json"), qPrintable(window_->last_message()));
+        QVERIFY(glm::length(window_->scene().camera.position - engine.position) < 1e-9);
+    }
+
     void theWindowsMatricesAreTheClis() {
         window_->resize(1600, 1000);
         const QString scene = source("data/scenes/default.json");
