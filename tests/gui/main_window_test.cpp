@@ -413,7 +413,8 @@ private slots:
         const Camera& used = window_->inspection()->scene.camera;
         QVERIFY2(glm::length(used.position - engine.position) < 1e-9, "the camera's position");
         QVERIFY(glm::length(used.view_direction() - engine.view_direction()) < 1e-9);
-        QVERIFY(std::abs(used.fov_y_deg - 40.0) < 1e-9 && std::abs(used.near - 0.25) < 1e-9 && std::abs(used.far - 60.0) < 1e-9);
+        QVERIFY(std::abs(used.fov_y_deg - 40.0) < 1e-9 && std::abs(used.near - 0.25) < 1e-9 &&
+                std::abs(used.far - 60.0) < 1e-9);
         const QString bad = dir.filePath("view_only.json");
         std::ofstream(bad.toStdString()) << R"({"camera": {"view": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}})";
         window_->import_camera_matrices(bad, {});
