@@ -1,11 +1,12 @@
 // The window while the user drags: a 30-step drag of the light handle over the default scene, a
 // step per frame (issue 16). Every step is computed off the GUI thread, and the panels are built and
 // drawn one per turn of the event loop, so a 5 ms heartbeat on the GUI thread never waits more than
-// 50 ms for computing, landing or building. A wait in which a panel was drawn is bounded apart:
-// under a software OpenGL (llvmpipe, here) drawing one panel of the town takes the CPU 30-50 ms and
-// Qt's composition of the window some 20 more, which a GPU does in a few; there one panel's
-// drawing may take up to 100 ms, with a GPU the same 50 ms hold. A ctest of its own, run alone:
-// another test beside it on two cores would measure the machine, not the window.
+// 50 ms for computing, landing or building. A wait in which OpenGL drew (a panel rendered, or Qt
+// composing the window, which holds OpenGL widgets) is bounded apart: under a software OpenGL
+// (llvmpipe, here) one panel of the town takes the CPU 30-50 ms and the composition that shows it
+// 20-40 ms more, which a GPU does in a few; there such a wait may reach 150 ms, with a GPU the same
+// 50 ms hold. A ctest of
+// its own, run alone: another test beside it on two cores would measure the machine, not the window.
 #include <algorithm>
 #include <cmath>
 #include <QElapsedTimer>
@@ -24,11 +25,24 @@ using namespace shadowlab;
 namespace {
 
 constexpr qint64 kLongestWaitMs = 50;                  // issue 16
-constexpr qint64 kLongestSoftwareDrawingWaitMs = 100;  // one panel drawn by llvmpipe, composed by Qt
+constexpr qint64 kLongestSoftwareDrawingWaitMs = 150;  // a panel drawn by llvmpipe and the window composed
 
-// The GUI thread's longest waits between two beats of a timer, apart by whether a panel was drawn.
+// The GUI thread's longest waits between two beats of a timer, apart by whether OpenGL drew.
 struct Heartbeat {
     qint64 longest_without_drawing = 0, longest_drawing = 0;
+};
+
+// Counts the window's compositions: each update request of the top-level window composes it with
+// OpenGL, as it holds OpenGL widgets (the panels).
+class CompositionCounter : public QObject {
+public:
+    int compositions = 0;
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        compositions += event->type() == QEvent::UpdateRequest;
+        return QObject::eventFilter(watched, event);
+    }
 };
 
 }  // namespace
@@ -49,19 +63,21 @@ private slots:
                                         [](ViewPanel* p) { return p->view() == ViewKind::world; });
         QVERIFY(world != window.panels().end());
 
+        CompositionCounter composed;
+        window.installEventFilter(&composed);
+        const auto drawn = [&] { return window.drawings() + composed.compositions; };
         Heartbeat waits;
         QElapsedTimer clock;
         qint64 last_beat = 0;
-        int drawings_at_last_beat = window.drawings();
+        int drawn_at_last_beat = drawn();
         QTimer heartbeat;
         heartbeat.setInterval(5);
         connect(&heartbeat, &QTimer::timeout, [&] {
             const qint64 wait = clock.elapsed() - last_beat;
-            qint64& longest =
-                window.drawings() != drawings_at_last_beat ? waits.longest_drawing : waits.longest_without_drawing;
+            qint64& longest = drawn() != drawn_at_last_beat ? waits.longest_drawing : waits.longest_without_drawing;
             longest = std::max(longest, wait);
             last_beat = clock.elapsed();
-            drawings_at_last_beat = window.drawings();
+            drawn_at_last_beat = drawn();
         });
         clock.start();
         heartbeat.start();
@@ -77,15 +93,14 @@ private slots:
         heartbeat.stop();
 
         const bool software = is_software_renderer(opengl_renderer());
-        qInfo("longest wait of the GUI thread: %lld ms with no panel drawn, %lld ms with one drawn (%s)",
+        qInfo("longest wait of the GUI thread: %lld ms with no drawing, %lld ms with OpenGL drawing (%s)",
               static_cast<long long>(waits.longest_without_drawing), static_cast<long long>(waits.longest_drawing),
               opengl_renderer().c_str());
-        QVERIFY2(
-            waits.longest_without_drawing <= kLongestWaitMs,
-            qPrintable(QString("the GUI thread waited %1 ms with no panel drawn").arg(waits.longest_without_drawing)));
+        QVERIFY2(waits.longest_without_drawing <= kLongestWaitMs,
+                 qPrintable(QString("the GUI thread waited %1 ms with no drawing").arg(waits.longest_without_drawing)));
         const qint64 drawing_bound = software ? kLongestSoftwareDrawingWaitMs : kLongestWaitMs;
         QVERIFY2(waits.longest_drawing <= drawing_bound,
-                 qPrintable(QString("the GUI thread waited %1 ms drawing a panel").arg(waits.longest_drawing)));
+                 qPrintable(QString("the GUI thread waited %1 ms drawing").arg(waits.longest_drawing)));
 
         const Aabb bounds = window.scene().bounds();
         const glm::dvec3 towards = glm::normalize(0.5 * (bounds.min + bounds.max) - last_point);
