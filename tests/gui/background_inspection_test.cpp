@@ -11,15 +11,25 @@ using namespace shadowlab;
 
 namespace {
 
-// What a worker delivered.
+// What a worker delivered, in order ("landed", "plotted", "failed").
 struct Delivered {
     std::vector<std::shared_ptr<const Inspection>> landed;
-    QStringList failed;
+    std::vector<std::shared_ptr<const Plot>> plotted;
+    QStringList failed, order;
 
     explicit Delivered(BackgroundInspection& worker) {
-        QObject::connect(&worker, &BackgroundInspection::landed,
-                         [this](std::shared_ptr<const Inspection> in) { landed.push_back(std::move(in)); });
-        QObject::connect(&worker, &BackgroundInspection::failed, [this](const QString& why) { failed << why; });
+        QObject::connect(&worker, &BackgroundInspection::landed, [this](std::shared_ptr<const Inspection> in) {
+            landed.push_back(std::move(in));
+            order << "landed";
+        });
+        QObject::connect(&worker, &BackgroundInspection::plotted, [this](std::shared_ptr<const Plot> plot) {
+            plotted.push_back(std::move(plot));
+            order << "plotted";
+        });
+        QObject::connect(&worker, &BackgroundInspection::failed, [this](const QString& why) {
+            failed << why;
+            order << "failed";
+        });
     }
 };
 
@@ -48,6 +58,25 @@ private slots:
         QVERIFY(delivered.failed.isEmpty());
         QCOMPARE(delivered.landed.front()->name(), std::string("tsm"));
         QCOMPARE(delivered.landed.front()->depth().resolution, 512);  // prepared for the Shadow map view
+    }
+
+    // The plot, slower than the inspection, lands after it: the views do not wait for the Plot dock.
+    void thePlotLandsAfterTheInspection() {
+        BackgroundInspection worker;
+        const Delivered delivered(worker);
+        InspectionJob job = job_for(scene_, "lispsm");
+        job.plot = PlotRequest{.kind = PlotKind::error_against_resolution,
+                               .scene = scene_,
+                               .method = "lispsm",
+                               .settings = {},
+                               .resolution = 512};
+        worker.submit(std::move(job));
+        QTRY_VERIFY_WITH_TIMEOUT(!worker.busy(), 120000);
+        QApplication::processEvents();
+        QCOMPARE(delivered.order, QStringList({"landed", "plotted"}));
+        const ChartSpec& chart = delivered.plotted.front()->chart;
+        QCOMPARE(chart.series.size(), size_t(2));
+        QCOMPARE(chart.series.front().x, std::vector<double>({256, 512, 1024, 2048}));
     }
 
     void aChangeThatCannotBeInspectedIsToldWhy() {

@@ -540,9 +540,8 @@ private slots:
         QProcess cli;
         cli.start(SHADOWLAB_CLI, {"shimmer", source("data/scenes/box_on_plane.json"), "--method",
                                   QString::fromStdString(request.method), "--resolution",
-                                  QString::number(request.resolution), "--frames",
-                                  QString::number(PlotPanel::kShimmerFrames), "--size",
-                                  QString("%1x%1").arg(PlotPanel::kImageWidth), "--out", out.path()});
+                                  QString::number(request.resolution), "--frames", QString::number(kShimmerFrames),
+                                  "--size", QString("%1x%1").arg(kPlotImageWidth), "--out", out.path()});
         QVERIFY(cli.waitForFinished(120000));
         QCOMPARE(cli.exitCode(), 0);
         const QString printed = cli.readAllStandardOutput();

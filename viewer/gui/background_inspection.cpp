@@ -83,10 +83,10 @@ void BackgroundInspection::deliver(std::uint64_t number, std::function<void()> e
         Qt::QueuedConnection);
 }
 
-// The phases: the method (inspect_scene), then each panel's lazy parts. Between two, a newer job
-// cancels this one; the result is posted to the GUI thread only if none came.
+// The phases: the method (inspect_scene), then each panel's lazy parts, then the plot. Between two,
+// a newer job cancels this one; a result is posted to the GUI thread only if none came.
 void BackgroundInspection::run(const InspectionJob& job, std::uint64_t number) {
-    const int phases = 1 + static_cast<int>(job.shown.size());
+    const int phases = 1 + static_cast<int>(job.shown.size()) + (job.plot ? 1 : 0);
     try {
         enter_phase("computing " + job.request.method, 0, phases);
         auto inspection = std::make_shared<const Inspection>(inspect_scene(job.scene, job.request));
@@ -98,6 +98,10 @@ void BackgroundInspection::run(const InspectionJob& job, std::uint64_t number) {
             prepare_view(*inspection, shown.view, shown.options);
         }
         deliver(number, [this, inspection] { emit landed(inspection); });
+        if (!job.plot || superseded(number)) return;
+        enter_phase(plot_work(*job.plot), phases - 1, phases);
+        auto plot = std::make_shared<const Plot>(measure_plot(*job.plot));
+        deliver(number, [this, plot] { emit plotted(plot); });
     } catch (const std::exception& e) {
         deliver(number, [this, why = QString::fromStdString(e.what())] { emit failed(why); });
     }

@@ -1,9 +1,9 @@
 #pragma once
 // The window's computing, off the GUI thread: one worker thread inspects the newest change and
-// prepares what the panels shown will read (depth maps, references, errors: prepare_view), so that
-// the GUI thread only draws. The latest change wins: a newer change cancels an older one at the
-// older one's next phase, and only the newest lands. The window reads how far it is for its
-// progress line.
+// prepares what the panels shown will read (depth maps, references, errors: prepare_view), then
+// measures the Plot dock's plot, so that the GUI thread only draws. The latest change wins: a newer change cancels an
+// older one at the older one's next phase, and only the newest lands. The window reads how far it is for its progress
+// line.
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -16,6 +16,7 @@
 #include <QObject>
 #include <QString>
 
+#include "gui/plot_measure.hpp"
 #include "model/inspection.hpp"
 #include "views/view.hpp"
 
@@ -28,11 +29,12 @@ struct ShownView {
 };
 
 // One change of the window: the scene as it stands (the camera's aspect the one in force), the
-// controls' request, and the panels shown.
+// controls' request, the panels shown, and the plot if the Plot dock is shown.
 struct InspectionJob {
     Scene scene;
     InspectionRequest request;
     std::vector<ShownView> shown;
+    std::optional<PlotRequest> plot;
 };
 
 // What the worker is doing: a phase's name and how many of the job's phases are done.
@@ -55,8 +57,10 @@ public:
     JobProgress progress() const;
 
 signals:
-    // Delivered on the GUI thread, for the newest job only.
+    // Delivered on the GUI thread, for the newest job only: its inspection, then (measured after it
+    // landed, as it takes longer) its plot, or why either failed.
     void landed(std::shared_ptr<const Inspection> inspection);
+    void plotted(std::shared_ptr<const Plot> plot);
     void failed(const QString& why);
 
 private:

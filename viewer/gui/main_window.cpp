@@ -44,20 +44,6 @@ constexpr int kErrorMessageLines = 4;  // an error opens the messages until the 
 constexpr int kResizeSettleMs = 250;
 constexpr int kProgressAfterMs = 100;  // shorter work shows no progress line
 
-// Long work in the window: a wait cursor and a status line, painted before the work starts, both
-// gone when it ends.
-class BusyNotice {
-public:
-    BusyNotice(QStatusBar* bar, const QString& what) {
-        QApplication::setOverrideCursor(Qt::WaitCursor);
-        bar->showMessage(what + "…");
-        QApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-    }
-    ~BusyNotice() { QApplication::restoreOverrideCursor(); }
-    BusyNotice(const BusyNotice&) = delete;
-    BusyNotice& operator=(const BusyNotice&) = delete;
-};
-
 QDockWidget* dock(const QString& title, const QString& name, QWidget* content, QMainWindow* window) {
     auto* d = new QDockWidget(title, window);
     d->setObjectName(name);
@@ -93,6 +79,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(aspect_timer_, &QTimer::timeout, this, &MainWindow::follow_panel_aspect);
     connect(computing_, &BackgroundInspection::landed, this, &MainWindow::land);
     connect(computing_, &BackgroundInspection::failed, this, &MainWindow::fail);
+    connect(computing_, &BackgroundInspection::plotted, this,
+            [this](std::shared_ptr<const Plot> plot) { plot_->show_plot(*plot); });
     progress_timer_->setInterval(kProgressAfterMs);
     connect(progress_timer_, &QTimer::timeout, this, &MainWindow::show_progress);
     progress_bar_->setObjectName("progress");
@@ -307,10 +295,13 @@ bool MainWindow::computing() const { return computing_->busy() || !undrawn_.empt
 void MainWindow::recompute() {
     if (scene_.objects.empty()) return;
     const AspectInForce aspect = aspect_in_force();
-    InspectionJob job{.scene = scene_, .request = controls_->request(), .shown = {}};
+    InspectionJob job{.scene = scene_, .request = controls_->request(), .shown = {}, .plot = {}};
     job.scene.camera.aspect = aspect.aspect;
     for (ViewPanel* panel : panels_)
         job.shown.push_back({panel->view(), panel->options_for(view_options(), aspect.aspect)});
+    const Method* method = find_method(job.request.method);
+    if (plot_->isVisible() && method && method->makes_maps())
+        job.plot = plot_->request(job.scene, job.request.method, job.request.settings, job.request.resolution);
     aspect_source_ = aspect.source;
     computing_->submit(std::move(job));
     progress_timer_->start();
@@ -318,7 +309,7 @@ void MainWindow::recompute() {
 
 // Work over 100 ms: a progress bar by phases, and the phase in the status line.
 void MainWindow::show_progress() {
-    if (!computing_->busy()) return;
+    if (!computing_->busy()) return end_progress();
     const JobProgress progress = computing_->progress();
     progress_bar_->setRange(0, progress.total);
     progress_bar_->setValue(progress.done);
@@ -327,9 +318,13 @@ void MainWindow::show_progress() {
 }
 
 // The newest change's inspection: every view redraws from it.
-void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
+void MainWindow::end_progress() {
     progress_timer_->stop();
     progress_bar_->hide();
+}
+
+void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
+    if (!computing_->busy()) end_progress();  // else the plot is still measured: the timer ends it
     inspection_ = std::move(inspection);
     fit_messages(kIdleMessageLines);
     if (opening_ && !opening_->path.isEmpty()) {
@@ -353,22 +348,12 @@ void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
         QString(" — aspect %1 from %2").arg(inspection_->scene.camera.aspect, 0, 'f', 2).arg(aspect_source_));
     if (!notes.empty()) message(QString::fromStdString(told), false);
     redraw();
-    if (plot_->isVisible() && inspection_->has_map()) {
-        const InspectionRequest request = controls_->request();
-        try {
-            const BusyNotice busy(statusBar(), plot_->work(request.method));
-            plot_->update_plot(inspection_->scene, inspection_->method->name, request.settings, request.resolution);
-        } catch (const std::exception& e) {
-            message(QString("plot: ") + e.what(), true);
-        }
-    }
 }
 
 // The newest change cannot be inspected: said, the views keep the last inspection, and a scene just
 // opened gives way to the one before it.
 void MainWindow::fail(const QString& why) {
-    progress_timer_->stop();
-    progress_bar_->hide();
+    end_progress();
     message(why, true);
     if (!opening_) return;
     Opening opened = *std::exchange(opening_, std::nullopt);

@@ -88,6 +88,7 @@ private:
     void land(std::shared_ptr<const Inspection> inspection);
     void fail(const QString& why);
     void show_progress();
+    void end_progress();
     ViewOptions view_options() const;  // what every panel draws with
     void show_before_after_warp();
     void move_light_to(const glm::dvec3& point);
