@@ -317,12 +317,12 @@ void MainWindow::show_progress() {
     statusBar()->showMessage(QString::fromStdString(progress.phase) + "…");
 }
 
-// The newest change's inspection: every view redraws from it.
 void MainWindow::end_progress() {
     progress_timer_->stop();
     progress_bar_->hide();
 }
 
+// The newest change's inspection: every view redraws from it.
 void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
     if (!computing_->busy()) end_progress();  // else the plot is still measured: the timer ends it
     inspection_ = std::move(inspection);
@@ -404,7 +404,9 @@ void MainWindow::redraw() {
 // from that one.
 void MainWindow::redraw(ViewPanel* panel) {
     const bool idle = undrawn_.empty();
-    if (std::find(undrawn_.begin(), undrawn_.end(), panel) == undrawn_.end()) undrawn_.push_back(panel);
+    // Only the front can be built and waiting to be drawn: from an older inspection, so it is queued again.
+    const auto unbuilt = undrawn_.begin() + (!idle && undrawn_.front()->drawing_pending() ? 1 : 0);
+    if (std::find(unbuilt, undrawn_.end(), panel) == undrawn_.end()) undrawn_.push_back(panel);
     if (idle) QTimer::singleShot(1, this, &MainWindow::redraw_next_panel);
 }
 
