@@ -16,12 +16,10 @@
 #include <set>
 
 #include <vtkActor.h>
-#include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
-#include <vtkTextProperty.h>
 
 #include "lookup/moment_map.hpp"
 #include "maps/map_lookup.hpp"
@@ -162,18 +160,10 @@ void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
         if (setup.maps[i].projection == Projection::paraboloid) add_disc_rim(tile, edges);
         const auto side = static_cast<int>(std::lround(tile_resolution(setup.maps[i], n)));
         const std::string text = map_name(setup, i) + "\n" + std::to_string(side) + "²";
-        vtkNew<vtkBillboardTextActor3D> label;
-        label->SetInput(text.c_str());
-        if (setup.maps[i].projection ==
-            Projection::paraboloid) {  // in the corner the disc leaves empty, under the legend
-            label->SetPosition(a.x, a.y, a.z);
-            label->SetDisplayOffset(6, 6);
-        } else {
-            label->SetPosition(d.x, d.y, d.z);
-            label->SetDisplayOffset(6, -40);  // inside the tile, below its top edge
-        }
-        style_overlay_text(label->GetTextProperty(), 14, kTileBorder);
-        renderer->AddViewProp(label);
+        if (setup.maps[i].projection == Projection::paraboloid)  // in the corner the disc leaves empty, under the legend
+            add_world_label(renderer, a, text, 14, kTileBorder, {6, 6});
+        else
+            add_world_label(renderer, d, text, 14, kTileBorder, {6, -40});  // inside the tile, below its top edge
     }
     auto borders = actor_for(segments_polydata(edges, glm::dmat4(1.0)), kTileBorder);
     borders->GetProperty()->SetLineWidth(2.0f);

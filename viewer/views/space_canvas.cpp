@@ -1,13 +1,11 @@
 // Drawing into a space view: one actor per shape, lines and points unlit so their colours stay the
-// legend's; labels as billboard text, the same size on screen at any zoom.
+// legend's; labels over the view, the same size on screen at any zoom.
 #include <algorithm>
 
 #include <vtkActor.h>
-#include <vtkBillboardTextActor3D.h>
 #include <vtkMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
-#include <vtkTextProperty.h>
 
 #include "views/space_parts.hpp"
 
@@ -32,12 +30,7 @@ bool SpaceCanvas::draw(const Placed& placed, const Stroke& stroke, const std::st
 }
 
 void SpaceCanvas::label(const glm::dvec3& at, const std::string& text, const glm::dvec3& colour) {
-    vtkNew<vtkBillboardTextActor3D> actor;
-    actor->SetInput(text.c_str());
-    actor->SetPosition(at.x, at.y, at.z);
-    actor->SetDisplayOffset(6, 4);  // beside the point it names, not on it
-    style_overlay_text(actor->GetTextProperty(), 15, colour);
-    renderer_->AddViewProp(actor);
+    add_world_label(renderer_, at, text, 15, colour, {6, 4});  // beside the point it names, not on it
 }
 
 void SpaceCanvas::list(const glm::dvec3& colour, const std::string& legend) {

@@ -50,6 +50,10 @@ vtkSmartPointer<vtkActor> actor_for(const Placed& placed, const glm::dvec3& colo
 void place_scene_camera(vtkRenderer* renderer, const Camera& camera);  // the VTK camera = the scene's
 void show_image(vtkRenderer* renderer, const RgbImage& image);  // one screen square per pixel, crisp
 void add_caption(vtkRenderer* renderer, const std::string& text);
+// A label pinned to the world point `at`, `display_offset` pixels beside it, drawn over the view
+// (world_label.cpp: not a billboard in the scene, whose translucency would cost the view an extra pass).
+void add_world_label(vtkRenderer* renderer, const glm::dvec3& at, const std::string& text, int size,
+                     const glm::dvec3& colour, const glm::ivec2& display_offset);
 // Text over a view: a font with γ, ³ and × where one is installed, `size` points, `colour` on a
 // translucent black backing that keeps it legible over any picture.
 void style_overlay_text(vtkTextProperty* text, int size, const glm::dvec3& colour = glm::dvec3(1.0));
