@@ -27,6 +27,7 @@
 #include "lookup/kernel_taps.hpp"
 #include "lookup/shadow_reader.hpp"
 #include "raster/paraboloid_edges.hpp"
+#include "render/program_uniforms.hpp"
 #include "render/surface_shading.hpp"
 
 namespace shadowlab {
@@ -111,45 +112,44 @@ bool all_set(Found... found) {
 
 // Both stages: what map_homogeneous and hemisphere_side read. (The arrays are not const because
 // SetUniformMatrix4x4v takes a float*.)
-bool set_projection_uniforms(vtkShaderProgram* program, MapArrays& maps) {
+bool set_projection_uniforms(ProgramUniforms& program, MapArrays& maps) {
     return all_set(
-        program->SetUniform1iv("shadowMapProjection", kMaxMaps, maps.projection),
-        program->SetUniformMatrix4x4v("shadowMapWorldToUvz", kMaxMaps, glm::value_ptr(maps.world_to_uvz[0])),
-        program->SetUniform3fv("shadowMapParaboloidCentre", kMaxMaps, glm::value_ptr(maps.paraboloid_centre[0])),
-        program->SetUniformMatrix4x4v("shadowMapParaboloidFrame", kMaxMaps, glm::value_ptr(maps.paraboloid_frame[0])),
-        program->SetUniform1fv("shadowMapParaboloidNear", kMaxMaps, maps.paraboloid_near),
-        program->SetUniform1fv("shadowMapParaboloidFar", kMaxMaps, maps.paraboloid_far));
+        program.SetUniform1iv("shadowMapProjection", kMaxMaps, maps.projection),
+        program.SetUniformMatrix4x4v("shadowMapWorldToUvz", kMaxMaps, glm::value_ptr(maps.world_to_uvz[0])),
+        program.SetUniform3fv("shadowMapParaboloidCentre", kMaxMaps, glm::value_ptr(maps.paraboloid_centre[0])),
+        program.SetUniformMatrix4x4v("shadowMapParaboloidFrame", kMaxMaps, glm::value_ptr(maps.paraboloid_frame[0])),
+        program.SetUniform1fv("shadowMapParaboloidNear", kMaxMaps, maps.paraboloid_near),
+        program.SetUniform1fv("shadowMapParaboloidFar", kMaxMaps, maps.paraboloid_far));
 }
 
 // Stage 2: the rest of select_map, look_up and texel_of.
-bool set_lookup_uniforms(vtkShaderProgram* program, MapArrays& maps, const ShadowSetup& setup) {
+bool set_lookup_uniforms(ProgramUniforms& program, MapArrays& maps, const ShadowSetup& setup) {
     const MapSelection& s = setup.selection;
     const size_t splits = std::min(s.split_depths.size(), setup.maps.size() + 1);  // as by_view_depth reads them
     float split_depths[kMaxMaps + 1]{};
     std::transform(s.split_depths.begin(), s.split_depths.begin() + splits, split_depths,
                    [](double depth) { return static_cast<float>(depth); });
-    return all_set(program->SetUniformi("shadowMapCount", static_cast<int>(setup.maps.size())),
-                   program->SetUniform1iv("shadowMapCubeFace", kMaxMaps, maps.cube_face),
-                   program->SetUniform4fv("shadowMapViewport", kMaxMaps, glm::value_ptr(maps.viewport[0])),
-                   program->SetUniform4fv("shadowMapTileTexels", kMaxMaps, glm::value_ptr(maps.tile_texels[0])),
-                   program->SetUniformi("shadowSelectionRule", static_cast<int>(s.rule)),
-                   program->SetUniform3f("shadowSelectionEye", glm::value_ptr(s.eye)),
-                   program->SetUniform3f("shadowSelectionViewAxis", glm::value_ptr(s.view_axis)),
-                   program->SetUniform1fv("shadowSelectionSplitDepths", kMaxMaps + 1, split_depths),
-                   program->SetUniformi("shadowSelectionSplitCount", static_cast<int>(splits)),
-                   program->SetUniformf("shadowSelectionBlendBand", static_cast<float>(s.blend_band)),
-                   program->SetUniform3f("shadowSelectionCentre", glm::value_ptr(s.centre)));
+    return all_set(program.SetUniformi("shadowMapCount", static_cast<int>(setup.maps.size())),
+                   program.SetUniform1iv("shadowMapCubeFace", kMaxMaps, maps.cube_face),
+                   program.SetUniform4fv("shadowMapViewport", kMaxMaps, glm::value_ptr(maps.viewport[0])),
+                   program.SetUniform4fv("shadowMapTileTexels", kMaxMaps, glm::value_ptr(maps.tile_texels[0])),
+                   program.SetUniformi("shadowSelectionRule", static_cast<int>(s.rule)),
+                   program.SetUniform3f("shadowSelectionEye", glm::value_ptr(s.eye)),
+                   program.SetUniform3f("shadowSelectionViewAxis", glm::value_ptr(s.view_axis)),
+                   program.SetUniform1fv("shadowSelectionSplitDepths", kMaxMaps + 1, split_depths),
+                   program.SetUniformi("shadowSelectionSplitCount", static_cast<int>(splits)),
+                   program.SetUniformf("shadowSelectionBlendBand", static_cast<float>(s.blend_band)),
+                   program.SetUniform3f("shadowSelectionCentre", glm::value_ptr(s.centre)));
 }
 
 // Stage 2: the overlay, its map palette and its ramp (render/map_overlay.hpp).
-bool set_overlay_uniforms(vtkShaderProgram* program, MapOverlay overlay, const std::vector<glm::vec3>& ramp) {
+bool set_overlay_uniforms(ProgramUniforms& program, const std::vector<glm::vec3>& ramp) {
     static_assert(kMapPalette.size() == kMaxMaps, "one palette colour per map the pass holds");
     std::vector<glm::vec3> stops = ramp;
     stops.resize(ShadowMapPass::kMaxRampStops);
-    return all_set(program->SetUniformi("shadowOverlay", static_cast<int>(overlay)),
-                   program->SetUniform3fv("shadowPalette", kMaxMaps, glm::value_ptr(kMapPalette[0])),
-                   program->SetUniform3fv("shadowRamp", ShadowMapPass::kMaxRampStops, glm::value_ptr(stops[0])),
-                   program->SetUniformi("shadowRampCount", static_cast<int>(ramp.size())));
+    return all_set(program.SetUniform3fv("shadowPalette", kMaxMaps, glm::value_ptr(kMapPalette[0])),
+                   program.SetUniform3fv("shadowRamp", ShadowMapPass::kMaxRampStops, glm::value_ptr(stops[0])),
+                   program.SetUniformi("shadowRampCount", static_cast<int>(ramp.size())));
 }
 
 // The taps the filter reads around the lookup (filter_taps, the CPU's own list and order), as the
@@ -163,41 +163,42 @@ std::vector<glm::vec3> packed_taps(const ShadowFilter& f) {
 
 // Stage 2: the filter, the bias and the light ShadowReader reads with, and the image pixel grid
 // pixel_rotation numbers.
-bool set_filter_uniforms(vtkShaderProgram* program, const ShadowLookup& lookup, const Light& light,
+bool set_filter_uniforms(ProgramUniforms& program, const ShadowLookup& lookup, const Light& light,
                          std::vector<glm::vec3> taps, glm::ivec2 image_origin, int image_height) {
     const ShadowFilter& f = lookup.filter;
     const DepthBias& b = lookup.bias;
     const int tap_count = static_cast<int>(taps.size());
     taps.resize(ShadowMapPass::kMaxTaps);
-    const auto real = [program](const char* name, double value) {
-        return program->SetUniformf(name, static_cast<float>(value));
+    const auto real = [&program](const char* name, double value) {
+        return program.SetUniformf(name, static_cast<float>(value));
     };
-    return all_set(program->SetUniformi("shadowFilterKind", static_cast<int>(f.kind)),
-                   program->SetUniformi("shadowTapCount", tap_count),
-                   program->SetUniform3fv("shadowTaps", ShadowMapPass::kMaxTaps, glm::value_ptr(taps[0])),
-                   program->SetUniformi("shadowTapsTurn", f.kind == FilterKind::pcf && f.kernel == PcfKernel::poisson),
+    return all_set(program.SetUniformi("shadowTapCount", tap_count),
+                   program.SetUniform3fv("shadowTaps", ShadowMapPass::kMaxTaps, glm::value_ptr(taps[0])),
+                   program.SetUniformi("shadowTapsTurn", f.kind == FilterKind::pcf && f.kernel == PcfKernel::poisson),
                    real("shadowFilterRadiusTexels", f.radius_texels), real("shadowFilterRadiusWorld", f.radius_world),
-                   program->SetUniformi("shadowFilterKernelSize", f.kernel_size),
+                   program.SetUniformi("shadowFilterKernelSize", f.kernel_size),
                    real("shadowMinVariance", f.min_variance), real("shadowBleedReduction", f.bleed_reduction),
                    real("shadowEvsmPositive", f.evsm_positive), real("shadowEvsmNegative", f.evsm_negative),
                    real("shadowBiasConstant", b.constant), real("shadowBiasSlopeScale", b.slope_scale),
                    real("shadowBiasNormalOffset", b.normal_offset),
-                   program->SetUniformi("shadowBiasReceiverPlane", b.receiver_plane),
-                   program->SetUniformi("shadowLightDirectional", light.is_directional()),
-                   program->SetUniform3f("shadowLightPosition", glm::value_ptr(light.position)),
+                   program.SetUniformi("shadowLightDirectional", light.is_directional()),
+                   program.SetUniform3f("shadowLightPosition", glm::value_ptr(light.position)),
                    real("shadowLightRadius", light.radius),
                    real("shadowLightTanAngularRadius", std::tan(glm::radians(light.angular_radius_deg))),
-                   program->SetUniform2i("shadowImageOrigin", glm::value_ptr(image_origin)),
-                   program->SetUniformi("shadowImageHeight", image_height));
+                   program.SetUniform2i("shadowImageOrigin", glm::value_ptr(image_origin)),
+                   program.SetUniformi("shadowImageHeight", image_height));
+}
+
+template <class Value>
+std::string glsl_int_constant(const char* name, Value value) {
+    return "const int " + std::string(name) + " = " + std::to_string(static_cast<int>(value)) + ";\n";
 }
 
 // The constants the shaders share with C++, written from it so that neither side can drift: the
 // arrays' sizes, the values of Projection, MapSelection::Rule, FilterKind and MapOverlay, the
 // overlay's strength and range, and PCSS's search limit.
 std::string glsl_constants() {
-    const auto constant = [](const char* name, auto value) {
-        return "const int " + std::string(name) + " = " + std::to_string(static_cast<int>(value)) + ";\n";
-    };
+    const auto constant = [](const char* name, auto value) { return glsl_int_constant(name, value); };
     const auto real = [](const char* name, double value) {
         return "const float " + std::string(name) + " = " + std::to_string(value) + ";\n";
     };
@@ -212,6 +213,43 @@ std::string glsl_constants() {
            constant("shadowOverlayNone", MapOverlay::none) +
            constant("shadowOverlayCascadeIndex", MapOverlay::cascade_index) +
            real("shadowOverlayStrength", kOverlayStrength) + real("shadowTexelsLog2Range", kTexelsLog2Range);
+}
+
+// Stage 2's switches: what picks one branch for every fragment alike, the filter, whether the
+// receiver's plane slopes its depth, and the overlay (none on a grey-level output). One general
+// program reads them as uniforms. The common case, a hard lookup with neither receiver plane nor
+// overlay (the window's default), has a program of its own with them compiled in as constants, so
+// that the compiler drops the branches not taken, which a rasterizer on the CPU (llvmpipe) would
+// otherwise run under a mask for every fragment: the Camera view of the default town renders in
+// 35 ms instead of 48 (bench/view_drawing_bench.cpp). Only that case: a program compiles on the
+// GUI thread the first time it is drawn, and under llvmpipe, before Mesa's shader cache on disk
+// holds it, this one takes 0.14 s, the general one 1.6 s and one specialized for PCSS 0.9 s: each
+// specialization more would be one pause more for a user trying the filters.
+struct Stage2Switches {
+    FilterKind filter;
+    bool receiver_plane;
+    MapOverlay overlay;
+
+    bool compiled_in() const { return filter == FilterKind::hard && !receiver_plane && overlay == MapOverlay::none; }
+    std::string declarations() const {
+        const auto declared = [this](const char* name, int value) {
+            return compiled_in() ? glsl_int_constant(name, value) : "uniform int " + std::string(name) + ";\n";
+        };
+        return declared("shadowFilterKind", static_cast<int>(filter)) +
+               declared("shadowBiasReceiverPlane", receiver_plane) +
+               declared("shadowOverlay", static_cast<int>(overlay));
+    }
+    bool set(ProgramUniforms& program) const {
+        return compiled_in() || all_set(program.SetUniformi("shadowFilterKind", static_cast<int>(filter)),
+                                        program.SetUniformi("shadowBiasReceiverPlane", receiver_plane),
+                                        program.SetUniformi("shadowOverlay", static_cast<int>(overlay)));
+    }
+};
+
+Stage2Switches stage2_switches(const ShadowLookup& lookup, ShadowMapPass::Output output, MapOverlay overlay) {
+    return {.filter = lookup.filter.kind,
+            .receiver_plane = lookup.bias.receiver_plane,
+            .overlay = output == ShadowMapPass::Output::shaded ? overlay : MapOverlay::none};
 }
 
 // Both stages: each map's point before the division, map_homogeneous and hemisphere_side
@@ -374,7 +412,6 @@ constexpr const char* kBiasDeclarations = R"(
 uniform float shadowBiasConstant;      // world units along the light
 uniform float shadowBiasSlopeScale;    // times the slope-scaled bias
 uniform float shadowBiasNormalOffset;  // texels
-uniform int shadowBiasReceiverPlane;
 // across(): two unit directions perpendicular to l and to each other.
 void shadowAcross(vec3 l, out vec3 a, out vec3 b) {
   a = normalize(cross(l, abs(l.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
@@ -423,7 +460,6 @@ vec2 shadowReceiverPlaneGradient(int i, vec3 p, vec3 n) {
 // sample_moments does, bilinear between four texels, each texel's box sum taken from the depth
 // texture on the spot: the CPU's prefiltered texture, without a second render target.
 constexpr const char* kFilterDeclarations = R"(
-uniform int shadowFilterKind;
 uniform int shadowTapCount;
 uniform vec3 shadowTaps[shadowMaxTaps];  // (offset in the kernel's radius, weight)
 uniform int shadowTapsTurn;              // pcf's Poisson disk turns per pixel
@@ -617,7 +653,6 @@ float shadowMapVisibility(int i, vec3 position, vec3 normal, float rotation) {
 // sizes it to pick a mip level (the scale factor ρ, §8.14 of the 4.5 core profile): the longer of
 // d(u, v)/dx and d(u, v)/dy across the screen, in the tile's texels.
 constexpr const char* kOverlayDeclarations = R"(
-uniform int shadowOverlay;
 uniform vec3 shadowPalette[shadowMaxMaps];
 uniform vec3 shadowRamp[shadowMaxRampStops];
 uniform int shadowRampCount;
@@ -840,8 +875,8 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
     depth_->Deactivate();
 }
 
-bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment,
-                                           vtkAbstractMapper*, vtkProp*) {
+bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment, vtkAbstractMapper*,
+                                           vtkProp*) {
     const std::string projection = glsl_constants() + kProjectionDeclarations;
     if (stage_ == Stage::depth) {
         vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
@@ -850,8 +885,9 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
     }
     pass_world_position(vertex);
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec",
-                                 "//VTK::Light::Dec\n" + projection + kLookupDeclarations + kBiasDeclarations +
-                                     kFilterDeclarations + kOverlayDeclarations,
+                                 "//VTK::Light::Dec\n" + projection +
+                                     stage2_switches(lookup_, output_, overlay_).declarations() + kLookupDeclarations +
+                                     kBiasDeclarations + kFilterDeclarations + kOverlayDeclarations,
                                  false);
     declare_surface_shading(fragment);  // before the lookup's declarations, which use it
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", kLookup, false);
@@ -866,20 +902,21 @@ bool ShadowMapPass::PostReplaceShaderValues(std::string& vertex, std::string&, s
     return true;
 }
 
-bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*,
+bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbstractMapper*, vtkProp*,
                                         vtkOpenGLVertexArrayObject*) {
+    ProgramUniforms program(shader_program);
     MapArrays maps = map_arrays(setup_, resolution_);
     if (stage_ == Stage::depth)
-        return all_set(set_projection_uniforms(program, maps), program->SetUniformi("shadowDrawnMap", drawn_map_),
-                       program->SetUniform4f("shadowDrawnViewport", glm::value_ptr(maps.viewport[drawn_map_])));
+        return all_set(set_projection_uniforms(program, maps), program.SetUniformi("shadowDrawnMap", drawn_map_),
+                       program.SetUniform4f("shadowDrawnViewport", glm::value_ptr(maps.viewport[drawn_map_])));
     const bool unlit = output_ != Output::shaded;  // a grey level, white for lit: the lit mask or the visibility
     return all_set(set_projection_uniforms(program, maps), set_lookup_uniforms(program, maps, setup_),
-                   program->SetUniformi("shadowDepth", depth_->GetTextureUnit()),
-                   program->SetUniformi("shadowResolution", resolution_),
-                   program->SetUniformi("shadowLitThreshold", output_ == Output::lit_mask),
+                   program.SetUniformi("shadowDepth", depth_->GetTextureUnit()),
+                   program.SetUniformi("shadowResolution", resolution_),
+                   program.SetUniformi("shadowLitThreshold", output_ == Output::lit_mask),
                    set_filter_uniforms(program, lookup_, light_, taps_, image_origin_, image_height_),
-                   set_surface_shading_uniforms(program, frame_, unlit),
-                   set_overlay_uniforms(program, unlit ? MapOverlay::none : overlay_, ramp_));
+                   set_surface_shading_uniforms(shader_program, frame_, unlit), set_overlay_uniforms(program, ramp_),
+                   stage2_switches(lookup_, output_, overlay_).set(program));
 }
 
 void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {
