@@ -1,14 +1,14 @@
 // The window while the user drags: a 30-step drag of the light handle over the default scene, a
-// step per frame (issue 16). Every step is computed off the GUI thread, and the panels are built and
-// drawn one per turn of the event loop, so a 5 ms heartbeat on the GUI thread never waits more than
-// 50 ms for computing, landing or building. A wait in which OpenGL drew (a panel rendered, or Qt
-// composing the window, which holds OpenGL widgets) is bounded apart: under a software OpenGL
-// (llvmpipe, here) one panel of the town takes the CPU 30-50 ms and the composition that shows it
-// 20-40 ms more, which a GPU does in a few; there such a wait may reach 150 ms, with a GPU the same
-// 50 ms hold. A ctest of
+// step per frame (issue 16). Every step is computed off the GUI thread, and each panel is built,
+// rendered and presented in turns of its own of the event loop, so a 5 ms heartbeat on the GUI
+// thread never waits more than 50 ms, under a software OpenGL too (llvmpipe, here: a panel of the
+// town takes 5-35 ms to render, and Qt's composition of the window 7-13 ms). The event loop runs as
+// the application's does. The waits are reported apart by whether OpenGL drew in them. A ctest of
 // its own, run alone: another test beside it on two cores would measure the machine, not the window.
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <QEventLoop>
 #include <QElapsedTimer>
 #include <QSettings>
 #include <QTimer>
@@ -24,8 +24,7 @@ using namespace shadowlab;
 
 namespace {
 
-constexpr qint64 kLongestWaitMs = 50;                  // issue 16
-constexpr qint64 kLongestSoftwareDrawingWaitMs = 150;  // a panel drawn by llvmpipe and the window composed
+constexpr qint64 kLongestWaitMs = 50;  // issue 16
 
 // The GUI thread's longest waits between two beats of a timer, apart by whether OpenGL drew.
 struct Heartbeat {
@@ -44,6 +43,22 @@ protected:
         return QObject::eventFilter(watched, event);
     }
 };
+
+// Runs the event loop as the application runs it, until `done` holds or `timeout_ms` passes.
+// (QTest::qWait and qWaitFor sleep up to 10 ms between rounds of events, a wait the heartbeat
+// would count as the window's.)
+bool run_event_loop_until(const std::function<bool()>& done, int timeout_ms) {
+    QEventLoop loop;
+    QTimer check;
+    check.setInterval(1);
+    QObject::connect(&check, &QTimer::timeout, [&] {
+        if (done()) loop.quit();
+    });
+    QTimer::singleShot(timeout_ms, &loop, &QEventLoop::quit);
+    check.start();
+    loop.exec();
+    return done();
+}
 
 }  // namespace
 
@@ -87,19 +102,17 @@ private slots:
             const double angle = 0.5 + 0.04 * step;  // the light swings around the town, 60 units out
             last_point = {60.0 * std::cos(angle), 40.0, 60.0 * std::sin(angle)};
             emit(*world)->lightHandleMoved(last_point);
-            QTest::qWait(16);
+            run_event_loop_until([] { return false; }, 16);
         }
-        QVERIFY(testing::settled(window));
+        QVERIFY(run_event_loop_until([&] { return !window.computing(); }, 120000));
         heartbeat.stop();
 
-        const bool software = is_software_renderer(opengl_renderer());
         qInfo("longest wait of the GUI thread: %lld ms with no drawing, %lld ms with OpenGL drawing (%s)",
               static_cast<long long>(waits.longest_without_drawing), static_cast<long long>(waits.longest_drawing),
               opengl_renderer().c_str());
         QVERIFY2(waits.longest_without_drawing <= kLongestWaitMs,
                  qPrintable(QString("the GUI thread waited %1 ms with no drawing").arg(waits.longest_without_drawing)));
-        const qint64 drawing_bound = software ? kLongestSoftwareDrawingWaitMs : kLongestWaitMs;
-        QVERIFY2(waits.longest_drawing <= drawing_bound,
+        QVERIFY2(waits.longest_drawing <= kLongestWaitMs,
                  qPrintable(QString("the GUI thread waited %1 ms drawing").arg(waits.longest_drawing)));
 
         const Aabb bounds = window.scene().bounds();

@@ -398,28 +398,33 @@ void MainWindow::redraw() {
     for (ViewPanel* panel : panels_) redraw(panel);
 }
 
-// Queued: building a panel's view and drawing it are each one turn of the event loop, one panel
-// after another, so that the GUI thread answers between them (each takes tens of milliseconds for
-// a town under a software OpenGL). A panel still queued when a newer inspection lands is built
-// from that one.
+// Queued: building a panel's view, rendering it and presenting it are each one turn of the event
+// loop, one panel after another, so that the GUI thread answers between them (each takes tens of
+// milliseconds for a town under a software OpenGL). A panel still queued when a newer inspection
+// lands is built from that one. (Presenting each panel before the next is rendered, rather than all
+// together, lets a software rasterizer finish one panel before it starts the next.)
 void MainWindow::redraw(ViewPanel* panel) {
     const bool idle = undrawn_.empty();
-    // Only the front can be built and waiting to be drawn: from an older inspection, so it is queued again.
-    const auto unbuilt = undrawn_.begin() + (!idle && undrawn_.front()->drawing_pending() ? 1 : 0);
-    if (std::find(unbuilt, undrawn_.end(), panel) == undrawn_.end()) undrawn_.push_back(panel);
+    // Only the front can be built and not yet presented: from an older inspection, so it is queued again.
+    const auto built = !idle && (undrawn_.front()->rendering_pending() || undrawn_.front()->presenting_pending());
+    if (std::find(undrawn_.begin() + (built ? 1 : 0), undrawn_.end(), panel) == undrawn_.end()) undrawn_.push_back(panel);
     if (idle) QTimer::singleShot(1, this, &MainWindow::redraw_next_panel);
 }
 
 void MainWindow::redraw_next_panel() {
     if (undrawn_.empty()) return;
     ViewPanel* panel = undrawn_.front();
-    if (panel->drawing_pending()) {
-        panel->draw();
+    if (panel->presenting_pending()) {
+        panel->present();
+        ++drawings_;
+        undrawn_.erase(undrawn_.begin());
+    } else if (panel->rendering_pending()) {
+        panel->render();
         ++drawings_;
     } else {
         build_view_of(panel);
+        if (!panel->rendering_pending()) undrawn_.erase(undrawn_.begin());  // nothing to draw
     }
-    if (!panel->drawing_pending()) undrawn_.erase(undrawn_.begin());
     if (!undrawn_.empty()) QTimer::singleShot(1, this, &MainWindow::redraw_next_panel);
 }
 

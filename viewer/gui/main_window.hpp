@@ -58,8 +58,9 @@ public:
     const Scene& scene() const { return scene_; }
     const Inspection* inspection() const { return inspection_.get(); }  // the one the views show
     bool computing() const;  // a change's inspection has not landed, or not every panel is drawn from it
-    // How many times a panel has been drawn (rendered by OpenGL) so far: what the GUI thread spends
-    // on drawing, apart from computing, can be told apart (tests/gui/window_drag_test.cpp).
+    // How many turns of the event loop have drawn with OpenGL so far (a panel rendered, or presented):
+    // what the GUI thread spends on drawing can be told from the rest
+    // (tests/gui/window_drag_test.cpp).
     int drawings() const { return drawings_; }
     ControlsPanel* controls() const { return controls_; }
     StepPlayer* steps() const { return steps_; }
@@ -136,7 +137,7 @@ private:
     QTimer* progress_timer_;          // while computing: the progress line after 100 ms
     QProgressBar* progress_bar_;
     int drawings_ = 0;
-    std::vector<ViewPanel*> undrawn_;  // the panels still to build and draw from the inspection shown
+    std::vector<ViewPanel*> undrawn_;  // the panels still to build, render and present from the inspection shown
     ControlsPanel* controls_;
     ScenePanel* scene_panel_;
     QAction* save_scene_ = nullptr;

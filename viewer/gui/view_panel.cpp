@@ -5,7 +5,6 @@
 #include <QHBoxLayout>
 #include <QImage>
 #include <QTimer>
-#include <utility>
 #include <QVBoxLayout>
 #include <glm/gtc/type_ptr.hpp>
 #include <tuple>
@@ -193,7 +192,7 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
         window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleTrackballCamera>());
     handles_.clear();
     if (view() == ViewKind::world) add_world_handles(inspection);
-    draw_pending_ = true;
+    drawing_ = Drawing::render;
     return report;
 }
 
@@ -272,14 +271,28 @@ void ViewPanel::letterbox(vtkRenderer* renderer, const Camera& camera) {
     renderer->AddObserver(vtkCommand::StartEvent, fit);
 }
 
-void ViewPanel::draw() {
-    if (!std::exchange(draw_pending_, false)) return;
-    widget_->renderWindow()->Render();
-    widget_->update();
+// Rendered with the buffers left unswapped: VTK then keeps the image in its render framebuffer,
+// and the widget does not ask Qt to compose the window with it (QVTKRenderWindowAdapter ignores
+// such a frame). Presenting copies the image to the widget's framebuffer and asks for the
+// composition (vtkOpenGLRenderWindow::Frame, with its WindowFrameEvent).
+void ViewPanel::render() {
+    if (drawing_ != Drawing::render) return;
+    window_->SwapBuffersOff();
+    window_->Render();
+    window_->SwapBuffersOn();
+    drawing_ = Drawing::present;
+}
+
+void ViewPanel::present() {
+    if (drawing_ != Drawing::present) return;
+    window_->MakeCurrent();
+    window_->Frame();
+    drawing_ = Drawing::done;
 }
 
 RgbImage ViewPanel::grab() {
-    draw();
+    render();
+    present();
     const QImage frame = widget_->grabFramebuffer().convertToFormat(QImage::Format_RGB888);
     RgbImage image(frame.width(), frame.height());
     for (int y = 0; y < frame.height(); ++y)

@@ -35,11 +35,17 @@ public:
     QSize drawing_size() const;  // the VTK widget's, without the choosers
     // `options` completed by the panel's choosers and size, for a camera of `aspect`: what show draws with.
     ViewOptions options_for(const ViewOptions& options, double aspect) const;
-    // Builds the view from the inspection, to be drawn by draw(); returns what the view could not draw.
+    // Builds the view from the inspection, to be rendered; returns what the view could not draw.
     ViewReport show(const Inspection& inspection, const ViewOptions& options);
-    void draw();  // the view built last, rendered (each of the two takes a turn of the window's event loop)
-    bool drawing_pending() const { return draw_pending_; }
-    RgbImage grab();  // what the panel shows now (drawn first if a drawing is pending)
+    // Renders the view built last into the panel's framebuffer, not yet on screen. Building,
+    // rendering and presenting each take a turn of the window's event loop (under a software OpenGL
+    // tens of milliseconds each: presenting waits for the rasterizer, and Qt composes the window),
+    // and the GUI thread answers between them.
+    void render();
+    void present();  // what render() drew, on screen
+    bool rendering_pending() const { return drawing_ == Drawing::render; }
+    bool presenting_pending() const { return drawing_ == Drawing::present; }
+    RgbImage grab();  // what the panel shows now (rendered and presented first if pending)
 
 signals:
     void viewChosen();
@@ -72,7 +78,8 @@ private:
     QVTKOpenGLNativeWidget* widget_;
     vtkGenericOpenGLRenderWindow* window_;
     vtkRenderer* scene_renderer_ = nullptr;  // the view's own, the first of the window's renderers
-    bool draw_pending_ = false;
+    enum class Drawing { done, render, present };
+    Drawing drawing_ = Drawing::done;
     glm::dvec3 camera_origin_{0.0};          // the Camera view's coordinates are relative to it
 };
 
