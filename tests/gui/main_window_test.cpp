@@ -463,6 +463,7 @@ private slots:
     // An orbit the user leaves in the Light space panel survives another step and another method;
     // choosing a preset puts the preset's own camera back.
     void theCameraIsKeptBetweenSteps() {
+        QVERIFY(settled(*window_));  // the test before resized the window: its panels redraw first
         ViewPanel* light = panel_showing(ViewKind::light);
         const CameraPose placed = CameraPose::of(view_camera(light));
         const auto leave_an_orbit = [light] {  // a drag with the left button: the trackball turns the camera

@@ -63,7 +63,7 @@ MainWindow::MainWindow(QWidget* parent)
       steps_(new StepPlayer(this)),
       plot_(new PlotPanel(this)),
       messages_(new QPlainTextEdit(this)),
-      aspect_timer_(new QTimer(this)) {
+      resize_timer_(new QTimer(this)) {
     setWindowTitle("ShadowLab");
     const std::string& renderer = opengl_renderer();
     const bool software = is_software_renderer(renderer);
@@ -74,9 +74,9 @@ MainWindow::MainWindow(QWidget* parent)
     messages_->setLineWrapMode(QPlainTextEdit::NoWrap);  // one message a line: the newest shows when idle
     messages_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     fit_messages(kIdleMessageLines);
-    aspect_timer_->setSingleShot(true);
-    aspect_timer_->setInterval(kResizeSettleMs);
-    connect(aspect_timer_, &QTimer::timeout, this, &MainWindow::follow_panel_aspect);
+    resize_timer_->setSingleShot(true);
+    resize_timer_->setInterval(kResizeSettleMs);
+    connect(resize_timer_, &QTimer::timeout, this, &MainWindow::settle_resize);
     connect(computing_, &BackgroundInspection::landed, this, &MainWindow::land);
     connect(computing_, &BackgroundInspection::failed, this, &MainWindow::fail);
     connect(computing_, &BackgroundInspection::plotted, this,
@@ -98,9 +98,9 @@ MainWindow::MainWindow(QWidget* parent)
             panels_.push_back(panel);
             connect(panel, &ViewPanel::viewChosen, this, [this] {
                 recompute();             // the view may read parts of the inspection not yet made
-                aspect_timer_->start();  // the Camera view may have moved to another panel
+                resize_timer_->start();  // the Camera view may have moved to another panel
             });
-            connect(panel, &ViewPanel::resized, aspect_timer_, QOverload<>::of(&QTimer::start));
+            connect(panel, &ViewPanel::resized, resize_timer_, QOverload<>::of(&QTimer::start));
             connect(panel, &ViewPanel::cameraMoved, this,
                     [this](const glm::dvec3& p, const glm::dvec3& t, const glm::dvec3& u) {
                         scene_.camera.position = p, scene_.camera.target = t, scene_.camera.up = u;
@@ -285,12 +285,20 @@ ViewPanel* MainWindow::camera_panel() const {
     return nullptr;
 }
 
-// Unlocked, the aspect follows the Camera panel: recompute once a resize settles, if it changed.
-void MainWindow::follow_panel_aspect() {
-    if (inspection_ && aspect_in_force().aspect != inspection_->scene.camera.aspect) recompute();
+// Once a resize of the panels settles: unlocked, the aspect follows the Camera panel, recomputed if
+// it changed; else the panels are built again for their new sizes (a space view frames its region
+// for the panel's shape, an image view fits its pixels).
+void MainWindow::settle_resize() {
+    if (!inspection_) return;
+    if (aspect_in_force().aspect != inspection_->scene.camera.aspect)
+        recompute();
+    else
+        redraw();
 }
 
-bool MainWindow::computing() const { return computing_->busy() || !undrawn_.empty(); }
+bool MainWindow::computing() const {
+    return computing_->busy() || !undrawn_.empty() || resize_timer_->isActive();  // the last: a change to come
+}
 
 void MainWindow::recompute() {
     if (scene_.objects.empty()) return;
@@ -405,9 +413,10 @@ void MainWindow::redraw() {
 // together, lets a software rasterizer finish one panel before it starts the next.)
 void MainWindow::redraw(ViewPanel* panel) {
     const bool idle = undrawn_.empty();
-    // Only the front can be built and not yet presented: from an older inspection, so it is queued again.
-    const auto built = !idle && (undrawn_.front()->rendering_pending() || undrawn_.front()->presenting_pending());
-    if (std::find(undrawn_.begin() + (built ? 1 : 0), undrawn_.end(), panel) == undrawn_.end()) undrawn_.push_back(panel);
+    // Only the front can be built already, from an older inspection: its drawing is dropped, to be
+    // built again rather than rendered and shown stale.
+    if (!idle && undrawn_.front() == panel) panel->drop_drawing();
+    if (std::find(undrawn_.begin(), undrawn_.end(), panel) == undrawn_.end()) undrawn_.push_back(panel);
     if (idle) QTimer::singleShot(1, this, &MainWindow::redraw_next_panel);
 }
 

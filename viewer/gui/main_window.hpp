@@ -57,7 +57,9 @@ public:
 
     const Scene& scene() const { return scene_; }
     const Inspection* inspection() const { return inspection_.get(); }  // the one the views show
-    bool computing() const;  // a change's inspection has not landed, or not every panel is drawn from it
+    // A change's inspection has not landed, or not every panel is drawn from it, or a panel's resize
+    // has yet to settle into a change of the Camera view's aspect.
+    bool computing() const;
     // How many turns of the event loop have drawn with OpenGL so far (a panel rendered, or presented):
     // what the GUI thread spends on drawing can be told from the rest
     // (tests/gui/window_drag_test.cpp).
@@ -84,7 +86,7 @@ private:
     void build_menus();
     AspectInForce aspect_in_force() const;
     ViewPanel* camera_panel() const;  // the first panel showing the Camera view, or nullptr
-    void follow_panel_aspect();
+    void settle_resize();
     void recompute();
     void land(std::shared_ptr<const Inspection> inspection);
     void fail(const QString& why);
@@ -147,7 +149,7 @@ private:
     std::vector<ViewPanel*> panels_;
     std::vector<QSplitter*> splitters_;
     QMenu* recent_menu_ = nullptr;
-    QTimer* aspect_timer_;  // a resize recomputes once it settles, not on every step of a drag
+    QTimer* resize_timer_;  // a resize recomputes or redraws once it settles, not on every step of a drag
     QString last_message_;
     QTemporaryDir pasted_matrices_;  // the clipboard's light matrices, each paste a file of its own
     int pastes_ = 0;

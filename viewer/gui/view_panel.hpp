@@ -45,6 +45,7 @@ public:
     void present();  // what render() drew, on screen
     bool rendering_pending() const { return drawing_ == Drawing::render; }
     bool presenting_pending() const { return drawing_ == Drawing::present; }
+    void drop_drawing() { drawing_ = Drawing::done; }  // what show() built is neither rendered nor presented
     RgbImage grab();  // what the panel shows now (rendered and presented first if pending)
 
 signals:
