@@ -124,6 +124,15 @@ std::optional<ParsedGrid> parse_grid(const QStringList& lines) {
     return grid;
 }
 
+bool same_direction(const CameraPose& a, const CameraPose& b) {
+    constexpr double kClose = 1e-9;
+    const glm::dvec3 a_looks = glm::normalize(a.focal_point - a.position),
+                     b_looks = glm::normalize(b.focal_point - b.position);
+    return glm::length(a.focal_point - b.focal_point) < kClose * std::max(1.0, glm::length(a.focal_point)) &&
+           glm::length(a_looks - b_looks) < kClose && glm::length(a.view_up - b.view_up) < kClose &&
+           a.parallel_projection == b.parallel_projection;
+}
+
 bool same_pose(const CameraPose& a, const CameraPose& b) {
     constexpr double kClose = 1e-9;
     return glm::length(a.position - b.position) < kClose * std::max(1.0, glm::length(a.position)) &&
@@ -289,14 +298,16 @@ private slots:
     void matricesShowAsAlignedGridsAndCopyAtFullPrecision() {
         const Step& output = window_->inspection()->trace.steps().back();
         QCOMPARE(window_->steps()->chosen(), QString::fromStdString(output.id));
-        const auto matrix = std::find_if(output.values.begin(), output.values.end(),
-                                         [](const NamedValue& v) { return std::holds_alternative<glm::dmat4>(v.value); });
+        const auto matrix = std::find_if(output.values.begin(), output.values.end(), [](const NamedValue& v) {
+            return std::holds_alternative<glm::dmat4>(v.value);
+        });
         QVERIFY(matrix != output.values.end());
         const glm::dmat4 m = std::get<glm::dmat4>(matrix->value);
         const QString name = QString::fromStdString(matrix->name);
         for (const MatrixLayout layout : {MatrixLayout::column_vectors, MatrixLayout::row_vectors}) {
             window_->steps()->set_matrix_layout(layout);
-            const glm::dmat4 printed = layout == MatrixLayout::column_vectors ? m : glm::transpose(m);  // printed row by row
+            const glm::dmat4 printed =
+                layout == MatrixLayout::column_vectors ? m : glm::transpose(m);  // printed row by row
             const auto* label = window_->steps()->findChild<QLabel*>(name);
             QVERIFY(label && QFontInfo(label->font()).fixedPitch());
             const std::optional<ParsedGrid> shown = parse_grid(label->text().split('\n'));
@@ -305,8 +316,9 @@ private slots:
                 QCOMPARE(shown->cell_ends[r], shown->cell_ends[0]);
                 for (int c = 0; c < 4; ++c) {
                     const double entry = row(printed, r)[c];
-                    QVERIFY2(std::abs(shown->cells[r][c] - entry) <= 5e-4 * std::abs(entry),
-                             qPrintable(QString("cell %1, %2: %3 for %4").arg(r).arg(c).arg(shown->cells[r][c]).arg(entry)));
+                    QVERIFY2(
+                        std::abs(shown->cells[r][c] - entry) <= 5e-4 * std::abs(entry),
+                        qPrintable(QString("cell %1, %2: %3 for %4").arg(r).arg(c).arg(shown->cells[r][c]).arg(entry)));
                 }
             }
             window_->steps()->findChild<QPushButton*>("copyValues")->click();
@@ -448,7 +460,8 @@ private slots:
         QVERIFY(settled(*window_));
         const QSize panel = panel_showing(ViewKind::camera)->drawing_size();
         const double panel_aspect = static_cast<double>(panel.width()) / panel.height();
-        QVERIFY2(std::abs(panel_aspect - window_->scene().camera.aspect) > 0.05, "the test needs a panel of another shape");
+        QVERIFY2(std::abs(panel_aspect - window_->scene().camera.aspect) > 0.05,
+                 "the test needs a panel of another shape");
         QCOMPARE(window_->inspection()->scene.camera.aspect, panel_aspect);
         QVERIFY(window_->inspection()->setup.maps[0].world_to_uvz != locked);
         const QString status = window_->statusBar()->currentMessage();
@@ -487,7 +500,10 @@ private slots:
         auto* preset = light->findChild<QComboBox*>("presetChooser");
         emit preset->activated(preset->currentIndex());  // the user chooses the preset again
         QVERIFY(settled(*window_));
-        QVERIFY2(same_pose(CameraPose::of(view_camera(light)), placed), "choosing the preset kept the user's camera");
+        // The preset's own view: its focal point, direction and up (its distance fits the panel's
+        // shape when built, which the window's layout may have changed since `placed`).
+        QVERIFY2(same_direction(CameraPose::of(view_camera(light)), placed),
+                 "choosing the preset kept the user's camera");
         const CameraPose left_again = leave_an_orbit();
         QComboBox* selector = window_->controls()->method_selector();
         selector->setCurrentIndex(selector->findData("lispsm"));
@@ -525,7 +541,9 @@ private slots:
         emit camera->viewChosen();
         QVERIFY(settled(*window_));
         QVERIFY2(changed_share(shadows, camera->grab()) > 0.2, "the overlay did not tint the Camera view");
-        QVERIFY(!panel_showing(ViewKind::world)->findChild<QComboBox*>("overlayChooser")->isVisibleTo(panel_showing(ViewKind::world)));
+        QVERIFY(!panel_showing(ViewKind::world)
+                     ->findChild<QComboBox*>("overlayChooser")
+                     ->isVisibleTo(panel_showing(ViewKind::world)));
     }
 
     // The Plot dock's shimmer is `shadowlab shimmer` with the dock's path and image: the same numbers.
@@ -547,7 +565,8 @@ private slots:
         QCOMPARE(cli.exitCode(), 0);
         const QString printed = cli.readAllStandardOutput();
         QVERIFY2(printed.contains(QString::fromStdString(shimmer_summary(*shimmer))),
-                 qPrintable("the window: " + QString::fromStdString(shimmer_summary(*shimmer)) + "; the command: " + printed));
+                 qPrintable("the window: " + QString::fromStdString(shimmer_summary(*shimmer)) +
+                            "; the command: " + printed));
     }
 
     // A glTF file of two cameras opens with its first; choosing the second in the Scene panel reads
