@@ -3,7 +3,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config ccache
   libglm-dev nlohmann-json3-dev libcli11-dev libassimp-dev
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
