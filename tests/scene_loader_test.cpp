@@ -407,7 +407,7 @@ TEST(SceneRejects, MeshWithANonFiniteVertex) {
     // 1e39 is beyond float: Assimp reads it as inf.
     const fs::path mesh = write_temp("inf_vertex.obj", tetrahedron_obj(3, "v 0 1e39 0"));
     expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[2].file"); }, kFile,
-                  "objects[2].file", "mesh file " + mesh.string() + ": vertex 3 of mesh 0 is not finite: [0, inf, 0]");
+                  "objects[2].file", "mesh file " + mesh.string() + ": a vertex of mesh 0 is not finite: [0, inf, 0]");
 }
 
 TEST(SceneRejects, MeshWithOnlyZeroAreaTriangles) {

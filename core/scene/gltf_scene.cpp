@@ -91,12 +91,28 @@ std::string glb_json(const std::string& bytes, const std::string& file) {
     return bytes.substr(kJsonStart, length);
 }
 
+// glTF 1.0 (2015) keys its scenes, nodes and meshes by name in objects where 2.0 lists them in
+// arrays: read as 2.0 it fails on its first object ("scenes: expected an array"), so it is named.
+void refuse_gltf_1(const json& root, const std::string& file) {
+    const auto asset = root.find("asset");
+    const bool has_asset = asset != root.end() && asset->is_object();
+    const auto version = has_asset ? asset->find("version") : root.end();
+    const bool says_1 = has_asset && version != asset->end() && version->is_string() &&
+                        version->get<std::string>().starts_with("1.");
+    const auto scenes = root.find("scenes");
+    const bool keyed_scenes = scenes != root.end() && scenes->is_object();
+    if (says_1 || (keyed_scenes && !has_asset))
+        throw SceneError(file, has_asset ? "asset.version" : "scenes",
+                         "a glTF 1.0 file; ShadowLab reads glTF 2.0");
+}
+
 json gltf_json(const std::string& file) {
     const std::string bytes = file_bytes(file);
     try {
         json root = json::parse(lowercase_extension(file) == ".glb" ? glb_json(bytes, file) : bytes);
         if (!root.is_object())
             throw SceneError(file, "", "expected a glTF JSON object, got " + std::string(root.type_name()));
+        refuse_gltf_1(root, file);
         return root;
     } catch (const json::exception& error) {       // a syntax error, or a number beyond double's range
         const std::string message = error.what();  // "[json.exception.parse_error.101] parse error at line 3, ..."

@@ -35,6 +35,7 @@
 #include "scene/scene_loader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -641,14 +642,38 @@ std::string file_text(const std::string& path) {
     return text.str();
 }
 
+// What a file is: a glTF scene by its extension (.gltf, .glb), a scene JSON by its extension (.json)
+// or by its first byte that is not blank being '{', a mesh by any other extension Assimp reads, and
+// otherwise, whatever its name, by its content: a scene JSON when it begins as one, else a model
+// for Assimp, which tells formats by their signatures (a 3DS file named without an extension).
+enum class SceneFileKind { gltf, scene_json, mesh };
+
+bool begins_as_json_object(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char c = 0;
+    while (in.get(c))
+        if (!std::isspace(static_cast<unsigned char>(c))) return c == '{';
+    return false;
+}
+
+SceneFileKind scene_file_kind(const std::string& path) {
+    if (is_gltf_file(path)) return SceneFileKind::gltf;
+    if (std::filesystem::path(path).extension() == ".json") return SceneFileKind::scene_json;
+    if (is_mesh_file(path)) return SceneFileKind::mesh;
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error) || begins_as_json_object(path)) return SceneFileKind::scene_json;
+    return SceneFileKind::mesh;
+}
+
 }  // namespace
 
 Scene load_scene(const std::string& path, const SceneChoice& choice) {
-    if (is_gltf_file(path)) return told(read_gltf_scene(path, choice), path);
+    const SceneFileKind kind = scene_file_kind(path);
+    if (kind == SceneFileKind::gltf) return told(read_gltf_scene(path, choice), path);
     // A scene JSON or a lone mesh holds one of each; a JSON referencing a glTF scene has chosen.
     check_choice(path, "", "camera", choice.camera, 1, "the file");
     check_choice(path, "", "light", choice.light, 1, "the file");
-    if (is_mesh_file(path)) return scene_around_mesh(path);
+    if (kind == SceneFileKind::mesh) return scene_around_mesh(path);
     return parse_scene(file_text(path), path);
 }
 
@@ -666,8 +691,9 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
 }
 
 std::optional<GltfReference> gltf_reference_of(const std::string& path, const SceneChoice& choice) {
-    if (is_gltf_file(path)) return GltfReference{.gltf_file = path, .choice = choice, .roles = {}, .name = {}};
-    if (is_mesh_file(path)) return std::nullopt;
+    const SceneFileKind kind = scene_file_kind(path);
+    if (kind == SceneFileKind::gltf) return GltfReference{.gltf_file = path, .choice = choice, .roles = {}, .name = {}};
+    if (kind == SceneFileKind::mesh) return std::nullopt;
     const json root = parse_json(file_text(path), path);
     if (!references_gltf(root)) return std::nullopt;
     return SceneReader(path).read_reference(root);

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <assimp/Importer.hpp>
-#include <assimp/config.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
+#include <iostream>
+#include <optional>
 
-#include "io/value_text.hpp"
+#include "scene/assimp_reader.hpp"
+#include "scene/child_process.hpp"
+#include "scene/mesh_transfer.hpp"
 #include "scene/scene_error.hpp"
 
 namespace shadowlab {
@@ -17,65 +17,11 @@ namespace {
 // A relative mesh path is relative to the directory of the scene file that names it.
 std::filesystem::path resolve(const std::string& file, const std::string& scene_file) {
     std::filesystem::path path(file);
-    if (path.is_relative() && !scene_file.empty())
-        path = std::filesystem::path(scene_file).parent_path() / path;
+    if (path.is_relative() && !scene_file.empty()) path = std::filesystem::path(scene_file).parent_path() / path;
     return path.lexically_normal();
 }
 
-constexpr int kUnusedComponents =
-    aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
-    aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
-    aiComponent_TEXTURES | aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_MATERIALS;
-
-glm::dvec3 to_dvec3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
-
-void append_mesh(const aiMesh& mesh, const aiMatrix4x4& transform, TriangleMesh& out) {
-    if (!(mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;  // only points or lines
-    const int base = static_cast<int>(out.vertices.size());
-    for (unsigned i = 0; i < mesh.mNumVertices; ++i)
-        out.vertices.push_back(to_dvec3(transform * mesh.mVertices[i]));
-    for (unsigned i = 0; i < mesh.mNumFaces; ++i) {
-        const aiFace& face = mesh.mFaces[i];
-        if (face.mNumIndices != 3) continue;  // a point or a line
-        out.triangles.push_back({base + static_cast<int>(face.mIndices[0]),
-                                 base + static_cast<int>(face.mIndices[1]),
-                                 base + static_cast<int>(face.mIndices[2])});
-    }
-}
-
-// Calls visit(node, its world transform) for every node, depth first, a parent before its children.
-template <class Visit>
-void visit_nodes(const aiNode& node, const aiMatrix4x4& parent, const Visit& visit) {
-    const aiMatrix4x4 world_from_node = parent * node.mTransformation;
-    visit(node, world_from_node);
-    for (unsigned i = 0; i < node.mNumChildren; ++i) visit_nodes(*node.mChildren[i], world_from_node, visit);
-}
-
-void append_node_meshes(const aiScene& scene, const aiNode& node, const aiMatrix4x4& world_from_node,
-                        TriangleMesh& out) {
-    for (unsigned i = 0; i < node.mNumMeshes; ++i) append_mesh(*scene.mMeshes[node.mMeshes[i]], world_from_node, out);
-}
-
-// Why Assimp gave no usable scene: its own reason, or (its OBJ reader takes any text and finds
-// nothing in it, saying nothing) what was seen.
-std::string import_failure(const Assimp::Importer& importer, const aiScene* scene) {
-    const std::string reason = importer.GetErrorString();
-    if (!reason.empty()) return reason;
-    return scene ? "no mesh in it (empty, or not a format Assimp recognises)" : "Assimp gives no reason";
-}
-
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-// The first vertex of the file's meshes with a NaN or infinite coordinate, as the file gives it
-// (a node transform would turn 0 * inf into NaN), e.g. "vertex 3 of mesh 0 is not finite: [0, inf,
-// 0]"; empty when there is none.
-std::string non_finite_vertex(const aiScene& scene) {
-    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
-        for (unsigned i = 0; i < scene.mMeshes[m]->mNumVertices; ++i)
-            if (const glm::dvec3 v = to_dvec3(scene.mMeshes[m]->mVertices[i]); !finite(v))
-                return "vertex " + std::to_string(i) + " of mesh " + std::to_string(m) + " is not finite: " + value_text(v);
-    return "";
-}
 
 // Zero area: two corners coincide, or the three lie on a line so exactly that the cross product
 // of two edges is zero in double. Such a triangle has no normal for the tracer or the volumes.
@@ -124,20 +70,31 @@ private:
     const std::string& json_path_;
 };
 
-// The file read through `importer` (which owns the result), only positions kept, so that corners
-// differing in normal (STL) or uv are joined.
-const aiScene& import_positions(Assimp::Importer& importer, const std::filesystem::path& path,
-                                const MeshFileProblem& problem) {
+// The child's answer: 'N' and the nodes, or 'U' (Assimp read nothing) or 'P' (what it read is
+// unusable) and the reason.
+std::string answer(const AssimpRead& read) {
+    if (read.refusal.empty()) return "N" + encode_node_meshes(read.nodes);
+    return (read.unreadable ? "U" : "P") + read.refusal;
+}
+
+// The file's nodes, read by Assimp in a child process: a crash, a hang or a runaway allocation there
+// is this file's refusal, and the program goes on.
+std::vector<NodeMesh> read_nodes(const std::filesystem::path& path, const MeshFileProblem& problem) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) problem.refuse_missing();
-    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, kUnusedComponents);
-    const aiScene* scene =
-        importer.ReadFile(path.string(), aiProcess_RemoveComponent | aiProcess_Triangulate |
-                                             aiProcess_JoinIdenticalVertices);
-    if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-        problem.refuse_unread(import_failure(importer, scene));
-    if (const std::string bad = non_finite_vertex(*scene); !bad.empty()) problem.refuse(bad);
-    return *scene;
+    const ChildResult child = run_in_child([&] { return answer(read_with_assimp(path.string())); });
+    if (!child.ok()) problem.refuse_unread("the importer " + child.failure);
+    const std::string reason = child.bytes.substr(std::min<std::size_t>(1, child.bytes.size()));
+    if (child.bytes.starts_with('U')) problem.refuse_unread(reason);
+    if (child.bytes.starts_with('P')) problem.refuse(reason);
+    std::optional<std::vector<NodeMesh>> nodes = decode_node_meshes(reason);
+    if (!child.bytes.starts_with('N') || !nodes) problem.refuse_unread("the importer's answer is garbled");
+    std::size_t broken = 0;
+    for (const NodeMesh& node : *nodes) broken += node.mesh.broken_faces_dropped;
+    if (broken > 0)
+        std::clog << path.string() << ": " << broken
+                  << " faces name a vertex their mesh lacks (as Assimp reads them): left out\n";
+    return std::move(*nodes);
 }
 
 }  // namespace
@@ -145,12 +102,14 @@ const aiScene& import_positions(Assimp::Importer& importer, const std::filesyste
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path) {
     const std::filesystem::path path = resolve(file, scene_file);
     const MeshFileProblem problem(path, scene_file, json_path);
-    Assimp::Importer importer;
-    const aiScene& scene = import_positions(importer, path, problem);
     TriangleMesh mesh;
-    visit_nodes(*scene.mRootNode, aiMatrix4x4(), [&](const aiNode& node, const aiMatrix4x4& world_from_node) {
-        append_node_meshes(scene, node, world_from_node, mesh);
-    });
+    for (const NodeMesh& node : read_nodes(path, problem)) {
+        const int base = static_cast<int>(mesh.vertices.size());
+        mesh.vertices.insert(mesh.vertices.end(), node.mesh.vertices.begin(), node.mesh.vertices.end());
+        for (const std::array<int, 3>& t : node.mesh.triangles)
+            mesh.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+        mesh.broken_faces_dropped += node.mesh.broken_faces_dropped;
+    }
     if (mesh.triangles.empty()) problem.refuse_empty(0);
     problem.check_placed_and_drop_degenerate(mesh);
     if (mesh.triangles.empty()) problem.refuse_empty(mesh.degenerate_dropped);
@@ -161,17 +120,13 @@ std::vector<NodeMesh> load_node_meshes(const std::string& file, const std::strin
                                        const std::string& json_path) {
     const std::filesystem::path path = resolve(file, scene_file);
     const MeshFileProblem problem(path, scene_file, json_path);
-    Assimp::Importer importer;
-    const aiScene& scene = import_positions(importer, path, problem);
     std::vector<NodeMesh> nodes;
     std::size_t degenerate_dropped = 0;
-    visit_nodes(*scene.mRootNode, aiMatrix4x4(), [&](const aiNode& node, const aiMatrix4x4& world_from_node) {
-        NodeMesh placed{.node_name = node.mName.C_Str(), .mesh = {}};
-        append_node_meshes(scene, node, world_from_node, placed.mesh);
+    for (NodeMesh& placed : read_nodes(path, problem)) {
         problem.check_placed_and_drop_degenerate(placed.mesh);
         degenerate_dropped += placed.mesh.degenerate_dropped;
         if (!placed.mesh.triangles.empty()) nodes.push_back(std::move(placed));
-    });
+    }
     if (nodes.empty()) problem.refuse_empty(degenerate_dropped);
     return nodes;
 }

@@ -12,7 +12,8 @@ namespace shadowlab {
 struct TriangleMesh {
     std::vector<glm::dvec3> vertices;
     std::vector<std::array<int, 3>> triangles;
-    std::size_t degenerate_dropped = 0;  // the file's zero-area triangles, left out of `triangles`
+    std::size_t degenerate_dropped = 0;    // the file's zero-area triangles, left out of `triangles`
+    std::size_t broken_faces_dropped = 0;  // faces naming a vertex their mesh lacks (as Assimp read them)
 
     Aabb bounds() const {
         Aabb box;
@@ -21,12 +22,14 @@ struct TriangleMesh {
     }
 };
 
-// Loads OBJ, PLY, STL or glTF through Assimp, all meshes of the file merged, zero-area triangles
-// dropped (and counted). Throws SceneError naming `json_path` and saying why when the file is
-// missing or unreadable (Assimp's reason), has a vertex that is not finite, or no triangle of
-// non-zero area.
-TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file,
-                                const std::string& json_path);
+// Loads OBJ, PLY, STL, glTF or any format Assimp reads, all meshes of the file merged, zero-area
+// triangles dropped (and counted). Assimp runs in a child process (assimp_reader, child_process), so
+// a file it crashes or hangs on is refused like any other. Throws SceneError naming `json_path` and
+// saying why when the file is missing or unreadable (Assimp's reason; "the importer crashed (signal
+// 11, SIGSEGV)"; "the importer took over 60 s"), has a vertex that is not finite, or no triangle of
+// non-zero area. Faces naming a vertex beyond their mesh (Assimp reads a few so in some Quake 3
+// levels) are left out, counted, and said on stderr.
+TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path);
 
 // The meshes one node of a file holds, together, placed in the file's world by the node's transform
 // and its parents' (a glTF scene's objects, one per node).

@@ -1,0 +1,169 @@
+#include "scene/assimp_reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <unordered_map>
+#include <unordered_set>
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+
+#include "io/value_text.hpp"
+#include "scene/polygon_triangulation.hpp"
+
+namespace shadowlab {
+namespace {
+
+// A node tree deeper than this, or with more nodes, is refused rather than walked.
+constexpr std::size_t kMaxNodes = 1'000'000;
+
+// The structure Assimp returned is not what it promises: the refusal says where.
+struct Malformed {
+    std::string what;
+};
+
+glm::dvec3 to_dvec3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+std::string mesh_name(unsigned index) { return "mesh " + std::to_string(index); }
+
+const aiMesh& checked_mesh(const aiScene& scene, unsigned index) {
+    if (index >= scene.mNumMeshes || !scene.mMeshes || !scene.mMeshes[index])
+        throw Malformed{"names " + mesh_name(index) + ", but the file holds " + std::to_string(scene.mNumMeshes)};
+    const aiMesh& mesh = *scene.mMeshes[index];
+    if (mesh.mNumVertices > 0 && !mesh.mVertices) throw Malformed{mesh_name(index) + " has no vertex array"};
+    if (mesh.mNumFaces > 0 && !mesh.mFaces) throw Malformed{mesh_name(index) + " has no face array"};
+    return mesh;
+}
+
+// The first vertex of the file's meshes with a NaN or infinite coordinate, as the file gives it
+// (a node transform would turn 0 * inf into NaN), e.g. "a vertex of mesh 0 is not finite: [0, inf,
+// 0]"; empty when there is none. Not numbered: without Assimp's vertex joining, its arrays hold a
+// vertex per face corner for some formats (OBJ), so their index is not the file's.
+std::string non_finite_vertex(const aiScene& scene) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = checked_mesh(scene, m);
+        for (unsigned i = 0; i < mesh.mNumVertices; ++i)
+            if (const glm::dvec3 v = to_dvec3(mesh.mVertices[i]); !finite(v))
+                return "a vertex of " + mesh_name(m) + " is not finite: " + value_text(v);
+    }
+    return "";
+}
+
+// One mesh's faces appended to `out`, its vertices placed by `world_from_node`; corners at one
+// position in the file become one vertex (what aiProcess_JoinIdenticalVertices did), so that the
+// volumes find the edges that faces share.
+// How a mesh's faces name their corners: by their index arrays, or (Assimp 5.2's Quake 3 BSP reader
+// writes each face's three corners as consecutive vertices and leaves the face's indices unset:
+// heap garbage, out of range or not) as vertices 3f, 3f + 1, 3f + 2.
+enum class Corners { indexed, consecutive };
+
+Corners corners_of(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    return extension == ".pk3" || extension == ".bsp" ? Corners::consecutive : Corners::indexed;
+}
+
+// The corners of face f: its indices, or its consecutive vertices.
+std::vector<unsigned> face_corners(const aiMesh& mesh, unsigned f, Corners corners) {
+    const aiFace& face = mesh.mFaces[f];
+    if (corners == Corners::consecutive) return {3 * f, 3 * f + 1, 3 * f + 2};
+    return {face.mIndices, face.mIndices + face.mNumIndices};
+}
+
+void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& world_from_node, Corners corners_are,
+                 TriangleMesh& out) {
+    std::vector<glm::dvec3> placed(mesh.mNumVertices);
+    for (unsigned i = 0; i < mesh.mNumVertices; ++i) placed[i] = to_dvec3(world_from_node * mesh.mVertices[i]);
+    std::unordered_map<unsigned, int> welded_of_file;  // a file vertex -> its index in `out`
+    std::unordered_map<std::size_t, std::vector<int>> by_position;
+    const auto welded = [&](unsigned file_vertex) {
+        if (const auto known = welded_of_file.find(file_vertex); known != welded_of_file.end()) return known->second;
+        const aiVector3D& p = mesh.mVertices[file_vertex];
+        const std::size_t key =
+            std::hash<float>{}(p.x) ^ (std::hash<float>{}(p.y) << 1) ^ (std::hash<float>{}(p.z) << 2);
+        for (int candidate : by_position[key])
+            if (out.vertices[candidate] == placed[file_vertex]) return welded_of_file[file_vertex] = candidate;
+        const int index = static_cast<int>(out.vertices.size());
+        out.vertices.push_back(placed[file_vertex]);
+        by_position[key].push_back(index);
+        return welded_of_file[file_vertex] = index;
+    };
+    std::vector<int> corners;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace& face = mesh.mFaces[f];
+        if (face.mNumIndices < 3) continue;  // a point or a line casts no shadow
+        if (!face.mIndices)
+            throw Malformed{"face " + std::to_string(f) + " of " + mesh_name(mesh_index) + " has no corners"};
+        const std::vector<unsigned> file_corners = face_corners(mesh, f, corners_are);
+        if (std::any_of(file_corners.begin(), file_corners.end(), [&](unsigned c) { return c >= mesh.mNumVertices; })) {
+            ++out.broken_faces_dropped;
+            continue;
+        }
+        corners.clear();
+        for (unsigned c : file_corners) corners.push_back(welded(c));
+        if (corners.size() == 3)
+            out.triangles.push_back({corners[0], corners[1], corners[2]});
+        else
+            for (const std::array<int, 3>& t : triangulate_polygon(out.vertices, corners)) out.triangles.push_back(t);
+    }
+}
+
+// Every node with its world transform, depth first, a parent before its children, each node once
+// (a file whose tree loops back is read as a tree).
+std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
+    struct Pending {
+        const aiNode* node;
+        aiMatrix4x4 world_from_parent;
+    };
+    std::vector<Pending> stack{{scene.mRootNode, aiMatrix4x4()}};
+    std::unordered_set<const aiNode*> seen;
+    std::vector<NodeMesh> nodes;
+    while (!stack.empty()) {
+        const Pending pending = stack.back();
+        stack.pop_back();
+        if (!seen.insert(pending.node).second) continue;
+        if (seen.size() > kMaxNodes) throw Malformed{"more than " + std::to_string(kMaxNodes) + " nodes"};
+        const aiNode& node = *pending.node;
+        const aiMatrix4x4 world_from_node = pending.world_from_parent * node.mTransformation;
+        const std::string name = node.mName.C_Str();
+        if (node.mNumMeshes > 0 && !node.mMeshes) throw Malformed{"node \"" + name + "\" has no mesh list"};
+        if (node.mNumChildren > 0 && !node.mChildren) throw Malformed{"node \"" + name + "\" has no child list"};
+        NodeMesh placed{.node_name = name, .mesh = {}};
+        for (unsigned i = 0; i < node.mNumMeshes; ++i)
+            append_mesh(checked_mesh(scene, node.mMeshes[i]), node.mMeshes[i], world_from_node, corners, placed.mesh);
+        if (!placed.mesh.triangles.empty() || placed.mesh.broken_faces_dropped > 0) nodes.push_back(std::move(placed));
+        for (unsigned i = node.mNumChildren; i-- > 0;) {  // pushed last first: visited in the file's order
+            if (!node.mChildren[i]) throw Malformed{"node \"" + name + "\" has a missing child"};
+            stack.push_back({node.mChildren[i], world_from_node});
+        }
+    }
+    return nodes;
+}
+
+// Why Assimp gave no usable scene: its own reason, or (its OBJ reader takes any text and finds
+// nothing in it, saying nothing) what was seen.
+std::string import_failure(const Assimp::Importer& importer, const aiScene* scene) {
+    const std::string reason = importer.GetErrorString();
+    if (!reason.empty()) return reason;
+    return scene ? "no mesh in it (empty, or not a format Assimp recognises)" : "Assimp gives no reason";
+}
+
+}  // namespace
+
+AssimpRead read_with_assimp(const std::string& path) {
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(path, 0);  // no post-processing: see the header
+    if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mNumMeshes == 0)
+        return {.nodes = {}, .refusal = import_failure(importer, scene), .unreadable = true};
+    try {
+        if (const std::string bad = non_finite_vertex(*scene); !bad.empty()) return {.nodes = {}, .refusal = bad};
+        return {.nodes = placed_nodes(*scene, corners_of(path)), .refusal = {}};
+    } catch (const Malformed& malformed) {
+        return {.nodes = {}, .refusal = "Assimp's reading of it is malformed: " + malformed.what};
+    }
+}
+
+}  // namespace shadowlab
