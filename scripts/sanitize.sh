@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The core tests under AddressSanitizer + UndefinedBehaviorSanitizer, then the scene fuzzer for a
-# bounded time over the shipped scenes and the bad files (fuzz/scene_fuzzer.cpp). Any finding fails.
-# Its own build, build-sanitize/ (clang, core and its tests only). Extra arguments go to the fuzzer.
+# The core tests under AddressSanitizer + UndefinedBehaviorSanitizer, then the fuzzers for a bounded
+# time: scene files over the shipped scenes and the bad files (fuzz/scene_fuzzer.cpp), model files
+# over the shipped meshes and the corpus's small ones (fuzz/mesh_fuzzer.cpp). Any finding fails.
+# Its own build, build-sanitize/ (clang, core and its tests only). Extra arguments go to both fuzzers.
 set -euo pipefail
 cd "$(dirname "$(readlink -f "$0")")/.."
 scripts/setup.sh
@@ -13,12 +14,24 @@ cmake --build build-sanitize -j2
 export UBSAN_OPTIONS=print_stacktrace=1
 ctest --test-dir build-sanitize --output-on-failure -j2
 
-# The fuzzer adds what it finds to the corpus: a copy, so the repository keeps only its seeds. A
-# crashing input is kept in build-sanitize/fuzz-findings/ to reproduce with
-# `build-sanitize/fuzz/scene_fuzzer <file>`.
-corpus=$(mktemp -d)
-trap 'rm -rf "$corpus"' EXIT
-cp data/scenes/*.json tests/data/bad/* fuzz/corpus/* "$corpus"/
+# The fuzzers add what they find to their corpora: copies, so the repository keeps only the seeds.
+# A crashing input is kept in build-sanitize/fuzz-findings/ to reproduce with
+# `build-sanitize/fuzz/scene_fuzzer <file>` (or mesh_fuzzer).
+scenes=$(mktemp -d)
+models=$(mktemp -d)
+trap 'rm -rf "$scenes" "$models"' EXIT
+cp data/scenes/*.json tests/data/bad/* fuzz/corpus/* "$scenes"/
+# Model seeds: the shipped meshes and the corpus's small OBJ, PLY, STL and glTF files (assimp-testmodels).
+cp data/meshes/* "$models"/
+find /usr/share/assimp/models/{OBJ,PLY,STL,glTF2} -type f -size -16k \( -iname '*.obj' -o -iname '*.ply' \
+  -o -iname '*.stl' -o -iname '*.gltf' -o -iname '*.glb' \) -exec cp --backup=numbered {} "$models"/ \;
 mkdir -p build-sanitize/fuzz-findings
-build-sanitize/fuzz/scene_fuzzer "$corpus" -max_total_time=60 -rss_limit_mb=4096 -timeout=10 \
-  -dict=fuzz/scene.dict -artifact_prefix=build-sanitize/fuzz-findings/ -print_final_stats=1 "$@"
+fuzz() {  # fuzz NAME CORPUS SECONDS [libFuzzer flags...]
+  local name=$1 corpus=$2 seconds=$3
+  shift 3
+  build-sanitize/fuzz/$name "$corpus" -max_total_time="$seconds" -rss_limit_mb=4096 \
+    -artifact_prefix=build-sanitize/fuzz-findings/ -print_final_stats=1 "$@"
+}
+fuzz scene_fuzzer "$scenes" 40 -timeout=10 -dict=fuzz/scene.dict "$@"
+# A model's import may take the child process's whole 60 s before it is refused as a hang.
+fuzz mesh_fuzzer "$models" 40 -timeout=90 "$@"
