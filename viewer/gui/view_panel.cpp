@@ -196,18 +196,20 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     return report;
 }
 
-// Two draggable handles in the World view: the light (where its marker is drawn) and the camera.
+// Two draggable handles in the World view: the light (where its marker is drawn) and the camera,
+// balls of a fixed size on screen whatever the scene's extent (a sphere handle's size is in pixels:
+// VTK turns it into a world radius from the view's camera when it builds the ball).
 void ViewPanel::add_world_handles(const Inspection& in) {
+    constexpr double kHandlePixels = 16.0;  // the ball's bounding square's side: a radius of 16 / √2 px
     const Aabb bounds = in.scene.bounds();
     const glm::dvec3 centre = 0.5 * (bounds.min + bounds.max);
     const Light& light = in.scene.light;
     const glm::dvec3 light_at = light.is_directional() ? centre - 0.6 * bounds.diagonal() * light.direction : light.position;
-    const double size = 0.04 * bounds.diagonal();
     for (const auto& [at, colour, is_light] : {std::tuple{light_at, glm::dvec3(1.0, 0.85, 0.1), true},
                                                std::tuple{in.scene.camera.position, glm::dvec3(1.0, 1.0, 1.0), false}}) {
         vtkNew<vtkSphereHandleRepresentation> representation;
         representation->SetWorldPosition(const_cast<double*>(glm::value_ptr(at)));
-        representation->SetHandleSize(size);
+        representation->SetHandleSize(kHandlePixels);
         representation->GetProperty()->SetColor(colour.r, colour.g, colour.b);
         auto handle = vtkSmartPointer<vtkHandleWidget>::New();
         handle->SetInteractor(window_->GetInteractor());
