@@ -264,9 +264,9 @@ private slots:
         QTemporaryDir dir;
         for (const double scale : {0.01, 1000.0}) {
             const QString file = dir.filePath(QString("tetrahedron_%1.obj").arg(scale));
-            std::ofstream(file.toStdString()) << "v " << -0.5 * scale << " 0 " << -0.5 * scale << "\nv " << 0.5 * scale
-                                              << " 0 " << -0.5 * scale << "\nv 0 0 " << 0.5 * scale << "\nv 0 "
-                                              << scale << " 0\nf 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n";
+            std::ofstream(file.toStdString())
+                << "v " << -0.5 * scale << " 0 " << -0.5 * scale << "\nv " << 0.5 * scale << " 0 " << -0.5 * scale
+                << "\nv 0 0 " << 0.5 * scale << "\nv 0 " << scale << " 0\nf 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n";
             QVERIFY(window_->open_file(file));
             QVERIFY(settled(*window_));
             ViewPanel* world = panel_showing(ViewKind::world);
@@ -280,14 +280,18 @@ private slots:
             QCOMPARE(balls.size(), size_t(2));
             for (vtkSphereHandleRepresentation* ball : balls) {
                 const double radius = on_screen_radius(renderer, ball);
-                QVERIFY2(radius > 6.0 && radius < 20.0, qPrintable(QString("a ball %1 px across at scale %2")
-                                                                        .arg(2.0 * radius)
-                                                                        .arg(scale)));
+                QVERIFY2(radius > 6.0 && radius < 20.0,
+                         qPrintable(QString("a ball %1 px across at scale %2").arg(2.0 * radius).arg(scale)));
             }
             vtkSphereHandleRepresentation* light = balls[0]->GetProperty()->GetColor()[2] < 0.5 ? balls[0] : balls[1];
-            QSignalSpy dropped(world, &ViewPanel::lightHandleMoved);
-            drag(world->findChild<QVTKOpenGLNativeWidget*>(), display_of(renderer, light->GetWorldPosition()), {30, 20});
-            QCOMPARE(dropped.count(), 1);
+            const glm::dvec3 start = glm::make_vec3(light->GetWorldPosition());
+            std::vector<glm::dvec3> drops;
+            const QMetaObject::Connection dropped =
+                connect(world, &ViewPanel::lightHandleMoved, [&](const glm::dvec3& at) { drops.push_back(at); });
+            drag(world->findChild<QVTKOpenGLNativeWidget*>(), display_of(renderer, glm::value_ptr(start)), {30, 20});
+            disconnect(dropped);
+            QCOMPARE(drops.size(), size_t(1));
+            QVERIFY2(glm::length(drops[0] - start) > 1e-3 * scale, "the ball was dropped where it was picked");
             QVERIFY(settled(*window_));
         }
     }
