@@ -10,6 +10,7 @@
 
 #include "gltf_support.hpp"
 #include "scene/gltf_scene.hpp"
+#include "scene/mesh_scene.hpp"
 #include "scene/scene_error.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -140,9 +141,26 @@ TEST(GltfScene, WithoutCameraOrLightItIsAModelOnTheGroundUnderTheDefaultSun) {
     ASSERT_EQ(model.scene.objects.size(), 3u);
     EXPECT_EQ(model.scene.objects[0].shape, Shape::plane);
     EXPECT_FALSE(model.scene.objects[0].casts);
-    EXPECT_TRUE(model.scene.camera.frustum().contains(glm::dvec3(0.0, 2.0, 0.0)));
+    // Framed, lit and grounded as a lone mesh of the nodes' bounds is (mesh_scene_test pins those parts).
+    Aabb nodes = model.scene.objects[1].world_bounds();
+    nodes.extend(model.scene.objects[2].world_bounds());
+    const Camera framing = camera_framing(nodes);
+    expect_near(model.scene.camera.position, framing.position);
+    expect_near(model.scene.camera.target, framing.target);
+    expect_near(model.scene.light.direction, sun_beside(framing).direction);
+    expect_near(model.scene.objects[0].size, ground_under(nodes, model.scene.light).size);
     EXPECT_TRUE(mentions(model.defaulted, "no camera"));
     EXPECT_TRUE(mentions(model.defaulted, "no KHR_lights_punctual light"));
+}
+
+TEST(GltfScene, WithACameraButNoLightTheSunStandsBehindThatCamera) {
+    nlohmann::json gltf = two_camera_scene();
+    gltf.erase("extensions");
+    for (nlohmann::json& node : gltf["nodes"]) node.erase("extensions");
+    const GltfScene scene = read_gltf_scene(written(gltf));
+    expect_near(scene.scene.camera.position, {0.0, 3.0, 8.0});  // the file's
+    expect_near(scene.scene.light.direction, sun_beside(scene.scene.camera).direction);
+    EXPECT_TRUE(mentions(scene.defaulted, "no KHR_lights_punctual light"));
 }
 
 TEST(GltfScene, AnOrthographicCameraIsNamedAndTheDefaultOneTakesItsPlace) {

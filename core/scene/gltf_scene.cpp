@@ -408,7 +408,7 @@ public:
     std::optional<Light> light(std::size_t chosen) const {
         const json& lights = lights_of(fields_, root_);
         if (lights.empty()) {
-            defaulted_.push_back("no KHR_lights_punctual light: the default sun, from above");
+            defaulted_.push_back("no KHR_lights_punctual light: the default sun, high behind the camera");
             return std::nullopt;
         }
         const std::string path = indexed(kLightsPath, chosen);
@@ -560,8 +560,9 @@ GltfScene read_gltf_scene_unvalidated(const std::string& file, const SceneChoice
     scene.objects = node_objects(file);
     const Aabb meshes = scene.bounds();
     scene.camera = lens ? placed_camera(*lens, meshes, out.defaulted) : camera_framing(meshes);
-    if (cameras_of(fields, root).empty()) scene.objects.insert(scene.objects.begin(), ground_under(meshes));
-    scene.light = light.value_or(sun_from_above());
+    scene.light = light.value_or(sun_beside(scene.camera));
+    if (cameras_of(fields, root).empty())
+        scene.objects.insert(scene.objects.begin(), ground_under(meshes, scene.light));
     return out;
 }
 

@@ -24,7 +24,12 @@
 #include <QTextBlock>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
+#include <glm/gtc/type_ptr.hpp>
 #include <vtkCamera.h>
+#include <vtkInteractorObserver.h>
+#include <vtkPropCollection.h>
+#include <vtkProperty.h>
+#include <vtkSphereHandleRepresentation.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
@@ -148,6 +153,35 @@ vtkCamera* view_camera(ViewPanel* panel) {
     return render_window(panel)->GetRenderers()->GetFirstRenderer()->GetActiveCamera();
 }
 
+// A world point's display position in a renderer (VTK's: pixels from the bottom left).
+glm::dvec2 display_of(vtkRenderer* renderer, const double* world) {
+    double display[3];
+    vtkInteractorObserver::ComputeWorldToDisplay(renderer, world[0], world[1], world[2], display);
+    return {display[0], display[1]};
+}
+
+// A sphere handle's radius on screen, in pixels: its centre to a point of its rim across the view.
+double on_screen_radius(vtkRenderer* renderer, vtkSphereHandleRepresentation* ball) {
+    const glm::dvec3 centre = glm::make_vec3(ball->GetWorldPosition());
+    const double* up = renderer->GetActiveCamera()->GetViewUp();
+    const glm::dvec3 rim = centre + ball->GetSphereRadius() * glm::normalize(glm::make_vec3(up));
+    return glm::length(display_of(renderer, glm::value_ptr(rim)) - display_of(renderer, glm::value_ptr(centre)));
+}
+
+// A left-button drag on a VTK widget from a display position by `by` pixels (right and up), as
+// Qt delivers it: press, moves, release.
+void drag(QWidget* widget, const glm::dvec2& display, const QPoint& by) {
+    const QPoint from(static_cast<int>(display.x), widget->height() - 1 - static_cast<int>(display.y));
+    const auto send = [&](QEvent::Type type, const QPoint& at, Qt::MouseButtons held) {
+        QMouseEvent event(type, at, Qt::LeftButton, held, Qt::NoModifier);
+        QApplication::sendEvent(widget, &event);
+    };
+    send(QEvent::MouseButtonPress, from, Qt::LeftButton);
+    for (int step = 1; step <= 5; ++step)
+        send(QEvent::MouseMove, from + QPoint(by.x() * step / 5, -by.y() * step / 5), Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, from + QPoint(by.x(), -by.y()), Qt::NoButton);
+}
+
 }  // namespace
 
 class MainWindowTest : public QObject {
@@ -221,6 +255,45 @@ private slots:
         const glm::dvec3 d = window_->scene().light.direction;
         QVERIFY2(d.x < -0.9 && d.y < 0.0, qPrintable(QString("light direction %1 %2 %3").arg(d.x).arg(d.y).arg(d.z)));
         QVERIFY2(changed_share(before, camera->grab()) > 0.01, "the shadows did not move");
+    }
+
+    // The World view's light and camera handles are balls of one size on screen, a tiny model's or
+    // a huge one's (they were sized by the scene's extent: invisible on the first, covering the
+    // second), and a ball is still picked and dragged: its drop turns the light.
+    void theHandlesKeepTheirSizeOnScreenAndStillDrag() {
+        QTemporaryDir dir;
+        for (const double scale : {0.01, 1000.0}) {
+            const QString file = dir.filePath(QString("tetrahedron_%1.obj").arg(scale));
+            std::ofstream(file.toStdString())
+                << "v " << -0.5 * scale << " 0 " << -0.5 * scale << "\nv " << 0.5 * scale << " 0 " << -0.5 * scale
+                << "\nv 0 0 " << 0.5 * scale << "\nv 0 " << scale << " 0\nf 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n";
+            QVERIFY(window_->open_file(file));
+            QVERIFY(settled(*window_));
+            ViewPanel* world = panel_showing(ViewKind::world);
+            world->grab();  // rendered: the balls are sized for the view's camera
+            vtkRenderer* renderer = render_window(world)->GetRenderers()->GetFirstRenderer();
+            std::vector<vtkSphereHandleRepresentation*> balls;
+            vtkPropCollection* props = renderer->GetViewProps();
+            props->InitTraversal();
+            while (vtkProp* prop = props->GetNextProp())
+                if (auto* ball = vtkSphereHandleRepresentation::SafeDownCast(prop)) balls.push_back(ball);
+            QCOMPARE(balls.size(), size_t(2));
+            for (vtkSphereHandleRepresentation* ball : balls) {
+                const double radius = on_screen_radius(renderer, ball);
+                QVERIFY2(radius > 6.0 && radius < 20.0,
+                         qPrintable(QString("a ball %1 px across at scale %2").arg(2.0 * radius).arg(scale)));
+            }
+            vtkSphereHandleRepresentation* light = balls[0]->GetProperty()->GetColor()[2] < 0.5 ? balls[0] : balls[1];
+            const glm::dvec3 start = glm::make_vec3(light->GetWorldPosition());
+            std::vector<glm::dvec3> drops;
+            const QMetaObject::Connection dropped =
+                connect(world, &ViewPanel::lightHandleMoved, [&](const glm::dvec3& at) { drops.push_back(at); });
+            drag(world->findChild<QVTKOpenGLNativeWidget*>(), display_of(renderer, glm::value_ptr(start)), {30, 20});
+            disconnect(dropped);
+            QCOMPARE(drops.size(), size_t(1));
+            QVERIFY2(glm::length(drops[0] - start) > 1e-3 * scale, "the ball was dropped where it was picked");
+            QVERIFY(settled(*window_));
+        }
     }
 
     // Volumes draw real stencil shadows in the window's Camera view: with the camera moved into a

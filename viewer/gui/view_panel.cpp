@@ -27,7 +27,9 @@ namespace shadowlab {
 namespace {
 
 // The views drawn in a space of the method (World, Light space, PPLS): they take a preset.
-bool is_space_view(ViewKind view) { return view == ViewKind::world || view == ViewKind::light || view == ViewKind::ppls; }
+bool is_space_view(ViewKind view) {
+    return view == ViewKind::world || view == ViewKind::light || view == ViewKind::ppls;
+}
 
 const char* preset_title(SpacePreset preset) {
     switch (preset) {
@@ -71,21 +73,25 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     aliasing_->addItem("m: perspective factor", static_cast<int>(AliasingShown::perspective));
     aliasing_->addItem("m: projection factor", static_cast<int>(AliasingShown::projection));
     aliasing_->setObjectName("aliasingChooser");
-    aliasing_->setToolTip("Lloyd's m, or its part a parameterization sets (perspective) or the surface's tilt sets "
-                          "(projection)");
+    aliasing_->setToolTip(
+        "Lloyd's m, or its part a parameterization sets (perspective) or the surface's tilt sets "
+        "(projection)");
     overlay_->addItem("Shadows", static_cast<int>(MapOverlay::none));
     overlay_->addItem("Map per pixel", static_cast<int>(MapOverlay::cascade_index));
     overlay_->addItem("Texels per pixel", static_cast<int>(MapOverlay::texels_per_pixel));
     overlay_->setObjectName("overlayChooser");
-    overlay_->setToolTip("the Camera view's colours: the shadows alone, or over them the map each pixel reads (a "
-                         "cascade's colour) or how many texels fall on a pixel (1/8 to 8)");
+    overlay_->setToolTip(
+        "the Camera view's colours: the shadows alone, or over them the map each pixel reads (a "
+        "cascade's colour) or how many texels fall on a pixel (1/8 to 8)");
     for (SpacePreset p : all_space_presets()) preset_->addItem(preset_title(p), static_cast<int>(p));
     preset_->setObjectName("presetChooser");
-    preset_->setToolTip("a free perspective orbit; orthographic along the light (what the map sees); or orthographic "
-                        "from the side, in the plane of the light and the view direction (where a warp shows)");
+    preset_->setToolTip(
+        "a free perspective orbit; orthographic along the light (what the map sees); or orthographic "
+        "from the side, in the plane of the light and the view direction (where a warp shows)");
     scene_in_ppls_->setObjectName("sceneInPpls");
     scene_in_ppls_->setChecked(ViewOptions{}.scene_in_ppls);
-    scene_in_ppls_->setToolTip("draw the scene's triangles in post-perspective light space (clipped near the unit cube)");
+    scene_in_ppls_->setToolTip(
+        "draw the scene's triangles in post-perspective light space (clipped near the unit cube)");
     connect(chooser_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ViewPanel::show_choosers_for_view);
     set_view(initial);
     show_choosers_for_view();
@@ -107,10 +113,11 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     choosers->addWidget(scene_in_ppls_);
     layout->addLayout(choosers);
     layout->addWidget(widget_, 1);
-    for (QComboBox* box : {chooser_, preset_}) connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] {
-        forget_camera();  // another view or preset starts from its own camera
-        emit viewChosen();
-    });
+    for (QComboBox* box : {chooser_, preset_})
+        connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] {
+            forget_camera();  // another view or preset starts from its own camera
+            emit viewChosen();
+        });
     for (QComboBox* box : {error_, aliasing_, texture_, overlay_})
         connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { emit viewChosen(); });
     connect(scene_in_ppls_, &QCheckBox::toggled, this, [this] { emit viewChosen(); });
@@ -196,18 +203,22 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     return report;
 }
 
-// Two draggable handles in the World view: the light (where its marker is drawn) and the camera.
+// Two draggable handles in the World view: the light (where its marker is drawn) and the camera,
+// balls of a fixed size on screen whatever the scene's extent (a sphere handle's size is in pixels:
+// VTK turns it into a world radius from the view's camera when it builds the ball).
 void ViewPanel::add_world_handles(const Inspection& in) {
+    constexpr double kHandlePixels = 16.0;  // the ball's bounding square's side: a radius of 16 / √2 px
     const Aabb bounds = in.scene.bounds();
     const glm::dvec3 centre = 0.5 * (bounds.min + bounds.max);
     const Light& light = in.scene.light;
-    const glm::dvec3 light_at = light.is_directional() ? centre - 0.6 * bounds.diagonal() * light.direction : light.position;
-    const double size = 0.04 * bounds.diagonal();
-    for (const auto& [at, colour, is_light] : {std::tuple{light_at, glm::dvec3(1.0, 0.85, 0.1), true},
-                                               std::tuple{in.scene.camera.position, glm::dvec3(1.0, 1.0, 1.0), false}}) {
+    const glm::dvec3 light_at =
+        light.is_directional() ? centre - 0.6 * bounds.diagonal() * light.direction : light.position;
+    for (const auto& [at, colour, is_light] :
+         {std::tuple{light_at, glm::dvec3(1.0, 0.85, 0.1), true},
+          std::tuple{in.scene.camera.position, glm::dvec3(1.0, 1.0, 1.0), false}}) {
         vtkNew<vtkSphereHandleRepresentation> representation;
         representation->SetWorldPosition(const_cast<double*>(glm::value_ptr(at)));
-        representation->SetHandleSize(size);
+        representation->SetHandleSize(kHandlePixels);
         representation->GetProperty()->SetColor(colour.r, colour.g, colour.b);
         auto handle = vtkSmartPointer<vtkHandleWidget>::New();
         handle->SetInteractor(window_->GetInteractor());
