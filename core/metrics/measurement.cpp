@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "lookup/lookup_settings.hpp"
 #include "math/stopwatch.hpp"
@@ -64,23 +63,17 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
 // kLossMargin more (0.05 percentage points: a few pixels of a small image are no loss).
 constexpr double kLossRatio = 2.0, kLossMargin = 0.0005;
 
-// The focused map's settings for a comparison with `warp`: its own defaults, read through the
-// warp's filter and bias settings, but those the warp declares with a default of its own (PSM's
-// bias_slope), which are the warp's and not the focused map's.
-Settings focused_settings_like(const Method& focused, const Method& warp, const Settings& settings) {
-    std::map<std::string, std::string> none;
-    Settings out = resolve_settings(focused.name, focused.settings, none);
-    for (const auto& [name, value] : settings.values()) {
-        const auto spec_in = [&](const Method& m) {
-            return std::find_if(m.settings.begin(), m.settings.end(), [&](const SettingSpec& s) { return s.name == name; });
-        };
-        const auto own = spec_in(warp), shared = spec_in(focused);
-        if (is_lookup_setting(name) && shared != focused.settings.end() && own != warp.settings.end() &&
-            own->default_value == shared->default_value)
-            out.set(name, value);
-    }
+// The focused map's settings for a comparison with a warp: its own defaults, read through the
+// warp's filter and bias settings.
+Settings focused_settings_like(const Method& focused, const Settings& settings) {
+    Settings out = resolve_settings(focused.name, focused.settings, {});
+    for (const auto& [name, value] : settings.values())
+        if (is_lookup_setting(name)) out.set(name, value);
     return out;
 }
+
+// Texels this many times the focused map's (perspective m, 95th percentile) are coarser, not noise.
+constexpr double kCoarser = 1.5;
 
 std::string percent(double share) { return label_number(100.0 * share) + "%"; }
 
@@ -97,9 +90,9 @@ std::string loss_cause(const Measurement& warp, const Measurement& focused, cons
                                    percent(f.false_light)) +
                        "; perspective m p95 " + label_number(w.m_perspective.p95) + " against " +
                        label_number(f.m_perspective.p95) +
-                       (w.m_perspective.p95 > f.m_perspective.p95 ? " (the warp's texels are coarser where the "
-                                                                    "camera looks)"
-                                                                  : "");
+                       (w.m_perspective.p95 > kCoarser * f.m_perspective.p95
+                            ? " (the warp's texels are coarser where the camera looks)"
+                            : "");
     return choices.empty() ? text : text + "; " + choices;
 }
 
@@ -109,7 +102,7 @@ std::optional<Note> warp_loss(const MeasureContext& c, const Method& warp, const
                               double bias, const Measurement& measured) {
     const Method& focused = *find_method("focused");
     const Measurement reference_map =
-        measure_maps(c, focused, focused_settings_like(focused, warp, settings), resolution, bias);
+        measure_maps(c, focused, focused_settings_like(focused, settings), resolution, bias);
     if (!(measured.error.misclassified > kLossRatio * reference_map.error.misclassified + kLossMargin))
         return std::nullopt;
     Trace trace;
