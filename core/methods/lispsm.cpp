@@ -68,17 +68,29 @@ struct LispsmSpace {
     // The warp's centre C takes its x and z from `eye` and looks along `view_direction` made
     // perpendicular to `light_direction`.
     glm::dvec3 eye, view_direction, light_direction;
-    // The eye's depths of the body's near and far faces: the near plane's distance in the world (z_f
-    // then estimated from the body); in SPPS both, as only their ratio counts there.
+    // The eye's depths of the body's near and far faces: in the world the nearest receiver the camera
+    // sees, or the virtual near plane beyond it (z_f then estimated from the body); in SPPS both, as
+    // only their ratio counts there.
     double z_n, z_f = 0.0;
+    DepthRange seen{};  // in the world: the receivers' view depths z_n was read from
 };
 
-LispsmSpace world_space(const ShadowInputs& in, const std::vector<glm::dvec3>& ws_points) {
+// The virtual near plane (Filament's shadowNearHint): the warp's eye range starts `near_hint` of the
+// way from the nearest to the farthest receiver seen, spending no texel on what lies before it. A
+// fraction of that range, not Filament's absolute 1 m, so that moving or scaling the scene changes
+// nothing; 0 (the default) is off, as a distance in metres would be meaningless for a model in
+// millimetres or at 1,000 units.
+double virtual_near(const DepthRange& seen, double near_hint) { return seen.near + near_hint * (seen.far - seen.near); }
+
+LispsmSpace world_space(const ShadowInputs& in, const IntersectionBody& body, const std::vector<glm::dvec3>& ws_points,
+                        double near_hint) {
+    const DepthRange seen = seen_receiver_depths(in, body);
     return {.points = ws_points,
             .eye = in.camera.position,
             .view_direction = in.camera.view_direction(),
             .light_direction = in.light.direction,
-            .z_n = in.camera.near};
+            .z_n = virtual_near(seen, near_hint),
+            .seen = seen};
 }
 
 // The spot's perspective about its axis (light space at the light, as perspective_map builds it):
@@ -235,7 +247,8 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
         return setup;
     }
     const bool spot = in.light.type == LightType::spot;
-    const LispsmSpace space = spot ? spot_space(in, region->ws_points) : world_space(in, region->ws_points);
+    const LispsmSpace space = spot ? spot_space(in, region->ws_points)
+                                   : world_space(in, region->body, region->ws_points, s.number("near_hint"));
 
     const double eta = s.number("eta");
     LispsmWarp w = lispsm_warp({.ws_body = &space.points,
@@ -271,13 +284,19 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
         draw_angle(gamma, "γ", w.ls_eye, ls_view, ls_light, arm / 2);
         Step& n_opt = t.add("n-opt", "n_opt",
                             "n = (z_n + sqrt(z_n z_f)) / sin γ, z_f = z_n + depth(B) sin γ; Lloyd's η: "
-                            "warp far/near = (z_f/z_n)^((1+η)/2)",
+                            "warp far/near = (z_f/z_n)^((1+η)/2); z_n: the nearest receiver seen (or the virtual "
+                            "near plane near_hint of the way to the farthest), not the camera's near plane",
                             Space::light)
                           .value("z_n", space.z_n)
                           .value("z_f", w.z_f)
                           .value("eta", eta)
                           .value("n", w.n)
                           .value("n_overridden", s.number("n") > 0.0 ? 1.0 : 0.0);
+        if (!spot)
+            n_opt.value("camera_near", in.camera.near)
+                .value("receivers_near", space.seen.near)
+                .value("receivers_far", space.seen.far)
+                .value("near_hint", s.number("near_hint"));
         if (w.warps)
             draw_dimension(n_opt, "n", w.ls_centre, w.ls_near_face);
         else
@@ -325,7 +344,16 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
 std::vector<SettingSpec> lispsm_settings() {
     return {{"eta", "Lloyd's η: -1 uniform, 0 LiSPSM's n_opt, 1 PSM-like", "0", -1.0, 1.0, {}},
             {"n", "warp near distance; 0 = automatic (n_opt)", "0", 0.0, 1e12, {}, 1},
+            {"near_hint",
+             "virtual near plane: the eye's range starts this fraction of the way from the nearest to the farthest "
+             "receiver seen (0: at the nearest)",
+             "0", 0.0, 0.66, {}},
+            {"depths",
+             "the receivers' view depths: of their boxes within the visible region, or of the camera's depth image",
+             "boxes", 0.0, 0.0, {"boxes", "image"}},
             body_kernel_setting()};
 }
+
+bool lispsm_reads_visible_depths(const Settings& s) { return s.choice("depths") == "image"; }
 
 }  // namespace shadowlab

@@ -10,6 +10,8 @@ namespace shadowlab {
 ShadowSetup compute_lispsm(const ShadowInputs& inputs, const Settings& settings, Trace* trace);
 // lispsm's settings, with their ranges and defaults.
 std::vector<SettingSpec> lispsm_settings();
+// depths = image: the eye's range is read off the camera's depth image (ShadowInputs::visible_depths).
+bool lispsm_reads_visible_depths(const Settings& settings);
 
 
 // The warp frustum's near distance n for the eye range [z_n, z_f] and angle γ between view and

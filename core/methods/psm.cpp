@@ -11,7 +11,6 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "lookup/lookup_settings.hpp"
 #include "math/matrix.hpp"
 #include "methods/focused.hpp"
 #include "methods/light_fit.hpp"
@@ -86,7 +85,7 @@ PerspectiveFit reaching_past_far(const PerspectiveFit& fit, const Light& pps_lig
 }  // namespace
 
 std::vector<SettingSpec> psm_settings() {
-    return {body_kernel_setting(), lookup_setting_defaulting_to("bias_slope", "0.25")};
+    return {body_kernel_setting()};
 }
 
 ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace) {

@@ -87,14 +87,13 @@ struct CentreLine {
 };
 
 // TSM: the centre line, from the near plane's centre to the far plane's centre, for the eye frustum
-// focused to the visible region V (its near and far planes moved to touch V).
-CentreLine centre_line(const Camera& camera, const IntersectionBody& body, const LightView& ls, Trace* trace) {
+// focused to what the camera sees of the receivers (its near and far planes moved to touch them:
+// seen_receiver_depths), so that the 80% rule's focus region starts where the receivers do.
+CentreLine centre_line(const ShadowInputs& in, const IntersectionBody& body, const LightView& ls, Trace* trace) {
+    const Camera& camera = in.camera;
     const glm::dvec3 view_dir = camera.view_direction();
-    double near = INFINITY, far = -INFINITY;
-    for (const glm::dvec3& p : body.visible.vertices) {
-        near = std::min(near, glm::dot(p - camera.position, view_dir));
-        far = std::max(far, glm::dot(p - camera.position, view_dir));
-    }
+    const DepthRange seen = seen_receiver_depths(in, body);
+    const double near = seen.near, far = seen.far;
     CentreLine l;
     l.near_centre = glm::dvec2(transform_point(ls.light_from_world, camera.position + near * view_dir));
     l.far_centre = glm::dvec2(transform_point(ls.light_from_world, camera.position + far * view_dir));
@@ -103,7 +102,8 @@ CentreLine centre_line(const Camera& camera, const IntersectionBody& body, const
     l.extent = glm::length(glm::dvec2(bounds_of(ls.body).extent()));
     record(trace, [&](Trace& t) {
         Step& step = t.add("tsm-centre-line", "Centre line l",
-              "from the near plane's centre to the far plane's centre, projected; near and far moved to touch V; "
+              "from the near plane's centre to the far plane's centre, projected; near and far moved to touch the "
+              "receivers seen; "
               "shorter than 5% of the points' extent: the light is parallel to the view",
               Space::light)
             .value("near", near).value("far", far)
@@ -302,7 +302,7 @@ ShadowSetup compute_tsm(const ShadowInputs& in, const Settings& s, Trace* trace)
     if (!body) return setup;
 
     const LightView ls = light_view(in, *body, trace);
-    const CentreLine l = centre_line(in.camera, *body, ls, trace);
+    const CentreLine l = centre_line(in, *body, ls, trace);
     if (l.degenerate()) {
         fall_back_to_focused(Note{NoteKind::degenerate_centre_line,
                                              "|l| / points' extent = " + std::to_string(l.length / l.extent) +

@@ -135,6 +135,53 @@ void fall_back_to_focused(Note reason, const ShadowInputs& in, const Intersectio
     fit_focused(in, body, setup, trace);
 }
 
+namespace {
+
+DepthRange view_depths(const Camera& camera, const std::vector<glm::dvec3>& points) {
+    DepthRange range{INFINITY, -INFINITY};
+    for (const glm::dvec3& p : points) {
+        const double depth = glm::dot(p - camera.position, camera.view_direction());
+        range.near = std::min(range.near, depth);
+        range.far = std::max(range.far, depth);
+    }
+    return range;
+}
+
+}  // namespace
+
+DepthRange seen_receiver_depths(const ShadowInputs& in, const IntersectionBody& body) {
+    if (in.visible_depths && !in.visible_depths->empty()) return *in.visible_depths;
+    const DepthRange visible = view_depths(in.camera, body.visible.vertices);
+    const DepthRange receivers = view_depths(in.camera, in.receiver_points());
+    DepthRange seen{std::max({visible.near, receivers.near, in.camera.near}),
+                    std::min({visible.far, receivers.far, in.camera.far})};
+    if (seen.empty()) seen = {std::max(visible.near, in.camera.near), std::min(visible.far, in.camera.far)};
+    return seen;
+}
+
+bool is_perspective_warp(const std::string& method) {
+    return method == "psm" || method == "lispsm" || method == "tsm" || method == "xpsm";
+}
+
+std::string warp_choices(const Trace& trace) {
+    struct Choice {
+        const char* step;
+        const char* value;
+    };
+    static constexpr Choice kChoices[] = {
+        {"n-opt", "z_n"}, {"n-opt", "z_f"}, {"n-opt", "n"},  // lispsm
+        {"psm-virtual-camera", "near"}, {"psm-virtual-camera", "far"}, {"psm-virtual-camera", "slide"},
+        {"tsm-centre-line", "near"}, {"tsm-centre-line", "far"}, {"tsm-focus-80", "eta"},
+        {"xpsm-7", "lengthP"}, {"xpsm-5", "maxLengthP"}};
+    std::string text;
+    for (const Choice& choice : kChoices)
+        if (const Step* step = trace.find(choice.step))
+            for (const NamedValue& v : step->values)
+                if (v.name == choice.value && std::holds_alternative<double>(v.value))
+                    text += (text.empty() ? "" : ", ") + v.name + " = " + label_number(std::get<double>(v.value));
+    return text;
+}
+
 std::vector<glm::dvec3> corners_within(const std::vector<Aabb>& boxes, const Aabb& region) {
     std::vector<glm::dvec3> points;
     for (const Aabb& b : boxes) {

@@ -3,6 +3,7 @@
 // taken before any warp is computed, and point sets clipped to the region that matters (for a spot
 // light, the part of the body its cone reaches).
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "geometry/intersection_body.hpp"
@@ -45,6 +46,23 @@ glm::dvec3 light_ray_at(const Light& light, const glm::dvec3& p);
 // Names the fallback and fits the focused map to the body.
 void fall_back_to_focused(Note reason, const ShadowInputs& inputs, const IntersectionBody& body,
                           ShadowSetup& setup, Trace* trace);
+
+// The view depths the warps read for the eye's range: what the camera can see of the receivers, as
+// Filament's LiSPSM takes them (computeNearFar over the receivers' volume), never the camera's near
+// and far planes, which say where the camera clips, not where anything is: a model 1,000 units away
+// under a near plane at 0.05 would spend the map on the empty air before it. The camera's depth image
+// where the caller measured it (ShadowInputs::visible_depths, not empty), else the receivers' boxes
+// within the visible region V (their view depths, and V's, overlapped; V's alone should the boxes'
+// corners all lie outside it). Within the camera's near and far either way.
+DepthRange seen_receiver_depths(const ShadowInputs& inputs, const IntersectionBody& body);
+
+// The perspective warps (psm, lispsm, tsm, xpsm): the methods a measurement holds against the
+// focused map (metrics/measurement.hpp).
+bool is_perspective_warp(const std::string& method);
+
+// The depths and the strength a warp chose, as its trace recorded them ("z_n = 0.05, z_f = 655, n =
+// 7.56"): what a note on a warp that loses names. Empty for a trace without them.
+std::string warp_choices(const Trace& trace);
 
 // Corners of each box cut to `region` (boxes that miss it give none).
 std::vector<glm::dvec3> corners_within(const std::vector<Aabb>& boxes, const Aabb& region);

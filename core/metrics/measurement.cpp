@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lookup/lookup_settings.hpp"
 #include "math/stopwatch.hpp"
+#include "methods/step_figures.hpp"
+#include "methods/warp_common.hpp"
 #include "reference/visible_depths.hpp"
 #include "scene/image_size.hpp"
 
@@ -13,14 +16,18 @@ namespace {
 // The setup, and the fastest of a few runs of it: a setup takes microseconds and the machine is noisy.
 // The visible depths, when the settings read them, are reduced from the reference's camera image
 // (its depth image) inside the timed run.
+ShadowInputs inputs_for(const MeasureContext& c, const Method& method, const Settings& settings) {
+    ShadowInputs inputs = gather_inputs(c.scene.camera, c.scene.light, c.boxes);
+    if (method.wants_visible_depths(settings)) inputs.visible_depths = receiver_depth_range(c.scene, c.reference);
+    return inputs;
+}
+
 ShadowSetup timed_setup(const MeasureContext& c, const Method& method, const Settings& settings, double& best_ms) {
     ShadowSetup setup;
     best_ms = INFINITY;
     for (int run = 0; run < 5; ++run) {
         const Stopwatch watch;
-        ShadowInputs inputs = gather_inputs(c.scene.camera, c.scene.light, c.boxes);
-        if (method.wants_visible_depths(settings)) inputs.visible_depths = receiver_depth_range(c.scene, c.reference);
-        setup = method.compute_maps(inputs, settings, nullptr);
+        setup = method.compute_maps(inputs_for(c, method, settings), settings, nullptr);
         best_ms = std::min(best_ms, watch.ms());
     }
     return setup;
@@ -52,6 +59,57 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     return m;
 }
 
+// A warp loses to the focused map when it misclassifies more than kLossRatio times its share and
+// kLossMargin more (0.05 percentage points: a few pixels of a small image are no loss).
+constexpr double kLossRatio = 2.0, kLossMargin = 0.0005;
+
+// The focused map's settings for a comparison with a warp: its own defaults, read through the
+// warp's filter and bias settings.
+Settings focused_settings_like(const Method& focused, const Settings& settings) {
+    Settings out = resolve_settings(focused.name, focused.settings, {});
+    for (const auto& [name, value] : settings.values())
+        if (is_lookup_setting(name)) out.set(name, value);
+    return out;
+}
+
+// Texels this many times the focused map's (perspective m, 95th percentile) are coarser, not noise.
+constexpr double kCoarser = 1.5;
+
+std::string percent(double share) { return label_number(100.0 * share) + "%"; }
+
+// Why the warp lost: the error it adds (false shadow: acne; false light: leaks and lost shadows), its
+// texels against the focused map's where the camera looks, and the depths it chose.
+std::string loss_cause(const Measurement& warp, const Measurement& focused, const std::string& choices) {
+    const ShadowError &w = warp.error, &f = focused.error;
+    const bool acne = w.false_shadow - f.false_shadow > w.false_light - f.false_light;
+    std::string text = warp.method + " misclassifies " + percent(w.misclassified) + " against the focused map's " +
+                       percent(f.misclassified) + "; mostly " +
+                       (acne ? "false shadow (acne: the bias is too small for the warp's depth slope), " +
+                                   percent(w.false_shadow) + " against " + percent(f.false_shadow)
+                             : "false light (leaks and lost shadows), " + percent(w.false_light) + " against " +
+                                   percent(f.false_light)) +
+                       "; perspective m p95 " + label_number(w.m_perspective.p95) + " against " +
+                       label_number(f.m_perspective.p95) +
+                       (w.m_perspective.p95 > kCoarser * f.m_perspective.p95
+                            ? " (the warp's texels are coarser where the camera looks)"
+                            : "");
+    return choices.empty() ? text : text + "; " + choices;
+}
+
+// The focused map measured on the same reference (traced once), at the same resolution and bias:
+// a warp that loses to it by more than kLossRatio says so, and why, in a note.
+std::optional<Note> warp_loss(const MeasureContext& c, const Method& warp, const Settings& settings, int resolution,
+                              double bias, const Measurement& measured) {
+    const Method& focused = *find_method("focused");
+    const Measurement reference_map =
+        measure_maps(c, focused, focused_settings_like(focused, settings), resolution, bias);
+    if (!(measured.error.misclassified > kLossRatio * reference_map.error.misclassified + kLossMargin))
+        return std::nullopt;
+    Trace trace;
+    warp.compute_maps(inputs_for(c, warp, settings), settings, &trace);
+    return Note{NoteKind::warp_loses, loss_cause(measured, reference_map, warp_choices(trace))};
+}
+
 Measurement measure_geometry(const MeasureContext& c, const Method& method, const Settings& settings) {
     const GeometryResult result = method.compute_geometry(c.scene, c.triangles, c.reference, settings, nullptr);
     Measurement m;
@@ -75,8 +133,12 @@ MeasureContext prepare_measurement(const Scene& scene, int width, int height, in
 
 Measurement measure(const MeasureContext& c, const Method& method, const Settings& settings, int resolution,
                     double bias) {
-    return method.makes_maps() ? measure_maps(c, method, settings, resolution, bias)
-                               : measure_geometry(c, method, settings);
+    if (!method.makes_maps()) return measure_geometry(c, method, settings);
+    Measurement m = measure_maps(c, method, settings, resolution, bias);
+    if (is_perspective_warp(method.name))
+        if (std::optional<Note> loss = warp_loss(c, method, settings, resolution, bias, m))
+            m.fallbacks.push_back(std::move(*loss));
+    return m;
 }
 
 }  // namespace shadowlab

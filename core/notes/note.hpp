@@ -31,6 +31,8 @@ enum class NoteKind {
     warp_not_needed,
     no_light_axis,
     no_matrices,
+    // Found when a warp is measured against the reference.
+    warp_loses,
     // Fallbacks of the lookups' filters.
     light_without_size,
     search_clamped,
