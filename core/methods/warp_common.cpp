@@ -12,23 +12,47 @@
 
 namespace shadowlab {
 
-std::optional<IntersectionBody> start_warp(const std::string& method, const ShadowInputs& in,
-                                           const Settings& settings, ShadowSetup& setup, Trace* trace) {
+std::optional<IntersectionBody> start_warp(const std::string& method, const ShadowInputs& in, const Settings& settings,
+                                           ShadowSetup& setup, Trace* trace) {
     auto body = body_or_uniform(in, settings, setup, trace);
     if (body && !in.light.is_directional()) {
-        fall_back_to_focused(Note{NoteKind::not_directional,
-                                             method + " warps directional lights only; focused map used for this " +
-                                                 to_string(in.light.type) + " light"},
-                             in, *body, setup, trace);
+        fall_back_to_focused(
+            Note{NoteKind::not_directional, method + " warps directional lights only; focused map used for this " +
+                                                to_string(in.light.type) + " light"},
+            in, *body, setup, trace);
         return std::nullopt;
     }
     return body;
 }
 
-std::optional<WarpRegion> start_warp_in_reach(const ShadowInputs& in, const Settings& settings, ShadowSetup& setup,
-                                              Trace* trace) {
+namespace {
+
+// Under an orthographic camera the view's post-perspective space is an affine image of the world: a
+// warp that adapts the map to the camera's perspective (PSM's, LiSPSM's with n = infinity, TSM's
+// trapezoid become a rectangle, XPSM's) has nothing to do. Names the fallback; true when taken.
+bool falls_back_for_orthographic(const std::string& method, const ShadowInputs& in, const IntersectionBody& body,
+                                 ShadowSetup& setup, Trace* trace) {
+    if (!in.camera.is_orthographic()) return false;
+    fall_back_to_focused(Note{NoteKind::orthographic_camera,
+                              method + " warps a perspective view; the camera is orthographic: nothing to warp, "
+                                       "focused map used"},
+                         in, body, setup, trace);
+    return true;
+}
+
+}  // namespace
+
+std::optional<IntersectionBody> start_perspective_warp(const std::string& method, const ShadowInputs& in,
+                                                       const Settings& settings, ShadowSetup& setup, Trace* trace) {
+    auto body = start_warp(method, in, settings, setup, trace);
+    if (body && falls_back_for_orthographic(method, in, *body, setup, trace)) return std::nullopt;
+    return body;
+}
+
+std::optional<WarpRegion> start_warp_in_reach(const std::string& method, const ShadowInputs& in,
+                                              const Settings& settings, ShadowSetup& setup, Trace* trace) {
     auto body = body_or_uniform(in, settings, setup, trace);
-    if (!body) return std::nullopt;
+    if (!body || falls_back_for_orthographic(method, in, *body, setup, trace)) return std::nullopt;
     if (in.light.type != LightType::spot) return WarpRegion{*body, body->body.vertices};
     std::vector<glm::dvec3> reach = spot_reach(in.light, body->body, trace);
     if (reach.empty()) {
@@ -129,8 +153,8 @@ glm::dvec3 light_ray_at(const Light& light, const glm::dvec3& p) {
     return light.is_directional() ? light.direction : glm::normalize(p - light.position);
 }
 
-void fall_back_to_focused(Note reason, const ShadowInputs& in, const IntersectionBody& body,
-                          ShadowSetup& setup, Trace* trace) {
+void fall_back_to_focused(Note reason, const ShadowInputs& in, const IntersectionBody& body, ShadowSetup& setup,
+                          Trace* trace) {
     add_fallback(setup, std::move(reason));
     fit_focused(in, body, setup, trace);
 }
@@ -150,8 +174,10 @@ ProjectedPoints project(const std::vector<glm::dvec3>& points, const glm::dmat4&
     out.points.reserve(points.size());
     for (const glm::dvec3& p : points) {
         const glm::dvec4 h = m * glm::dvec4(p, 1.0);
-        if (h.w < min_w) ++out.left_out;
-        else out.points.push_back(glm::dvec3(h) / h.w);
+        if (h.w < min_w)
+            ++out.left_out;
+        else
+            out.points.push_back(glm::dvec3(h) / h.w);
     }
     return out;
 }

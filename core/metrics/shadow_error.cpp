@@ -51,10 +51,11 @@ long neighbour(const ReferenceImage& ref, int x, int y, int dx, int dy, double& 
     return -1;
 }
 
-// Where the eye's ray through `seen` meets the plane through p with normal n.
-glm::dvec3 along_ray_onto_plane(const glm::dvec3& eye, const glm::dvec3& seen, const glm::dvec3& p,
+// Where the camera's ray through `seen` (from the eye, or parallel to the view for an orthographic
+// camera) meets the plane through p with normal n.
+glm::dvec3 along_ray_onto_plane(const Camera& camera, const glm::dvec3& seen, const glm::dvec3& p,
                                 const glm::dvec3& n) {
-    const glm::dvec3 ray = seen - eye;
+    const glm::dvec3 eye = camera.eye_of(seen), ray = seen - eye;
     return eye + ray * (glm::dot(n, p - eye) / glm::dot(n, ray));
 }
 
@@ -73,8 +74,8 @@ struct PixelAliasing {
 // the texel (A_l) against the pixel (A_e) alone: the perspective factor; the measure on T over it
 // is the projection factor. Both use the same one-pixel steps: H's are the neighbours' view rays
 // met with H, so that a surface which is H has a projection factor of exactly 1.
-PixelAliasing pixel_aliasing(const Scene& scene, const ReferenceImage& ref, const ShadowMap& map, double texels,
-                             int x, int y) {
+PixelAliasing pixel_aliasing(const Scene& scene, const ReferenceImage& ref, const ShadowMap& map, double texels, int x,
+                             int y) {
     double sx = 1, sy = 1;
     const long right = neighbour(ref, x, y, 1, 0, sx), down = neighbour(ref, x, y, 0, 1, sy);
     if (right < 0 || down < 0) return {};
@@ -90,10 +91,10 @@ PixelAliasing pixel_aliasing(const Scene& scene, const ReferenceImage& ref, cons
     };
     const double m = texel_extent(ref.position[right], ref.position[down]);
     if (m <= 0.0) return {};
-    const glm::dvec3 eye = scene.camera.position;
-    const glm::dvec3 halfway = glm::normalize(glm::normalize(eye - p) - along_light(scene.light, p));
-    const double perspective = texel_extent(along_ray_onto_plane(eye, ref.position[right], p, halfway),
-                                            along_ray_onto_plane(eye, ref.position[down], p, halfway));
+    const Camera& camera = scene.camera;
+    const glm::dvec3 halfway = glm::normalize(glm::normalize(camera.eye_of(p) - p) - along_light(scene.light, p));
+    const double perspective = texel_extent(along_ray_onto_plane(camera, ref.position[right], p, halfway),
+                                            along_ray_onto_plane(camera, ref.position[down], p, halfway));
     if (perspective <= 0.0) return {m, 0.0, 0.0};
     return {m, perspective, m / perspective};
 }
@@ -112,8 +113,8 @@ ShadowError unjudged(const ReferenceImage& ref) {
 void judge(ShadowError& e, const ReferenceImage& ref, size_t i, bool shadowed) {
     ++e.receiver_pixels;
     e.verdicts[i] = shadowed == !ref.lit[i] ? PixelVerdict::agree
-                    : shadowed             ? PixelVerdict::false_shadow
-                                           : PixelVerdict::false_light;
+                    : shadowed              ? PixelVerdict::false_shadow
+                                            : PixelVerdict::false_light;
 }
 
 // The shares of the receiver pixels judged wrong, each way.

@@ -31,6 +31,7 @@ enum class NoteKind {
     warp_not_needed,
     no_light_axis,
     no_matrices,
+    orthographic_camera,
     // Fallbacks of the lookups' filters.
     light_without_size,
     search_clamped,

@@ -86,14 +86,10 @@ std::optional<SpacePreset> space_preset_named(const std::string& name) {
 std::string map_name(const ShadowSetup& setup, size_t i) {
     static const char* const kFaces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
     switch (setup.selection.rule) {
-        case MapSelection::Rule::view_depth:
-            return "cascade " + std::to_string(i + 1);
-        case MapSelection::Rule::hemisphere:
-            return i == 0 ? "front" : "back";
-        case MapSelection::Rule::cube_face:
-            return std::string("face ") + kFaces[setup.maps[i].cube_face % 6];
-        default:
-            return "map " + std::to_string(i + 1);
+        case MapSelection::Rule::view_depth: return "cascade " + std::to_string(i + 1);
+        case MapSelection::Rule::hemisphere: return i == 0 ? "front" : "back";
+        case MapSelection::Rule::cube_face: return std::string("face ") + kFaces[setup.maps[i].cube_face % 6];
+        default: return "map " + std::to_string(i + 1);
     }
 }
 
@@ -163,6 +159,8 @@ void place_scene_camera(vtkRenderer* renderer, const Camera& camera) {
     vtk->SetFocalPoint(camera.target.x, camera.target.y, camera.target.z);
     vtk->SetViewUp(camera.up.x, camera.up.y, camera.up.z);
     vtk->SetViewAngle(camera.fov_y_deg);
+    vtk->SetParallelProjection(camera.is_orthographic());
+    vtk->SetParallelScale(camera.half_height);  // VTK's parallel scale is half the view's height
     vtk->SetClippingRange(camera.near, camera.far);
 }
 
