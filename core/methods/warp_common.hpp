@@ -48,8 +48,8 @@ std::vector<glm::dvec3> body_within_frustum(const ConvexPolyhedron& body, const 
 glm::dvec3 light_ray_at(const Light& light, const glm::dvec3& p);
 
 // Names the fallback and fits the focused map to the body.
-void fall_back_to_focused(Note reason, const ShadowInputs& inputs, const IntersectionBody& body, ShadowSetup& setup,
-                          Trace* trace);
+void fall_back_to_focused(Note reason, const ShadowInputs& inputs, const IntersectionBody& body,
+                          ShadowSetup& setup, Trace* trace);
 
 // Corners of each box cut to `region` (boxes that miss it give none).
 std::vector<glm::dvec3> corners_within(const std::vector<Aabb>& boxes, const Aabb& region);
