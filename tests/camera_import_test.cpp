@@ -1,6 +1,6 @@
 // An engine's camera read back as the scene's: a Camera written as an OpenGL, Direct3D or Vulkan
 // engine would write its view and projection, in every text form and storage, comes back as the
-// same camera and the same world -> clip matrix; what is not a pinhole camera is refused by name.
+// same camera and the same world -> clip matrix, a pinhole or an orthographic one; what is neither is refused by name.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -25,7 +25,7 @@ namespace {
 
 using testing::source_path;
 
-// An engine's conventions and how it builds its projection from a pinhole's fov, aspect, near, far.
+// An engine's conventions and how it builds its projection from a camera's fov or half height, aspect, near, far.
 struct Engine {
     std::string name;
     CameraConventions conventions;
@@ -56,15 +56,20 @@ glm::dmat4 engine_view(const Camera& camera, const CameraConventions& c) {
 }
 
 // The projection by the engines' own closed forms (glm::perspectiveRH_NO / _ZO, D3D's
-// PerspectiveFovLH): reversed Z swaps near and far; Vulkan negates the y row.
+// PerspectiveFovLH; glm::orthoRH_NO / _ZO, D3D's OrthographicLH): reversed Z swaps near and far;
+// Vulkan negates the y row.
 glm::dmat4 engine_projection(const Camera& camera, const CameraConventions& c) {
-    const double f = 1.0 / std::tan(glm::radians(camera.fov_y_deg) / 2.0);
+    const bool orthographic = camera.is_orthographic();
+    const double f = orthographic ? 1.0 / camera.half_height : 1.0 / std::tan(glm::radians(camera.fov_y_deg) / 2.0);
     const double n = c.reversed_z ? camera.far : camera.near, r = c.reversed_z ? camera.near : camera.far;
-    const glm::dvec4 depth = c.depth == ClipDepth::minus_one_to_one
-                                 ? glm::dvec4(0, 0, -(r + n) / (r - n), -2.0 * r * n / (r - n))
-                                 : glm::dvec4(0, 0, r / (n - r), -r * n / (r - n));
+    const glm::dvec4 depth =
+        orthographic ? (c.depth == ClipDepth::minus_one_to_one ? glm::dvec4(0, 0, -2.0 / (r - n), -(r + n) / (r - n))
+                                                               : glm::dvec4(0, 0, -1.0 / (r - n), -n / (r - n)))
+        : c.depth == ClipDepth::minus_one_to_one ? glm::dvec4(0, 0, -(r + n) / (r - n), -2.0 * r * n / (r - n))
+                                                 : glm::dvec4(0, 0, r / (n - r), -r * n / (r - n));
     const double y = c.y == ClipY::down ? -f : f;
-    const glm::dmat4 right_handed = from_rows({f / camera.aspect, 0, 0, 0}, {0, y, 0, 0}, depth, {0, 0, -1, 0});
+    const glm::dvec4 w = orthographic ? glm::dvec4(0, 0, 0, 1) : glm::dvec4(0, 0, -1, 0);
+    const glm::dmat4 right_handed = from_rows({f / camera.aspect, 0, 0, 0}, {0, y, 0, 0}, depth, w);
     return c.looks_along == EyeForward::plus_z ? right_handed * kFlipZ : right_handed;
 }
 
@@ -113,6 +118,14 @@ Camera engine_camera() {
             .far = 250.0};
 }
 
+// The same pose seen orthographically, 2.5 units from the image's centre to its top.
+Camera orthographic_engine_camera() {
+    Camera camera = engine_camera();
+    camera.projection = CameraProjection::orthographic;
+    camera.half_height = 2.5;
+    return camera;
+}
+
 void expect_relative(double a, double b, const std::string& what) {
     EXPECT_NEAR(a, b, 1e-9 * std::max(1.0, std::abs(b))) << what;
 }
@@ -131,7 +144,11 @@ void expect_same_camera(const Camera& imported, const Camera& camera, const std:
     for (int i = 0; i < 3; ++i) expect_relative(imported.position[i], camera.position[i], what + ": position");
     expect_same_direction(imported.view_direction(), camera.view_direction(), what + ": view direction");
     expect_same_direction(imported.up, image_up(camera), what + ": up");
-    expect_relative(imported.fov_y_deg, camera.fov_y_deg, what + ": fov");
+    EXPECT_EQ(imported.projection, camera.projection) << what;
+    if (camera.is_orthographic())
+        expect_relative(imported.half_height, camera.half_height, what + ": half height");
+    else
+        expect_relative(imported.fov_y_deg, camera.fov_y_deg, what + ": fov");
     expect_relative(imported.aspect, camera.aspect, what + ": aspect");
     expect_relative(imported.near, camera.near, what + ": near");
     expect_relative(imported.far, camera.far, what + ": far");
@@ -143,25 +160,26 @@ void expect_same_camera(const Camera& imported, const Camera& camera, const std:
 }
 
 TEST(CameraImport, EveryEngineConventionRoundTrips) {
-    const Camera camera = engine_camera();
     const Aabb bounds{.min = {-5, 0, -5}, .max = {5, 2, 5}};
-    for (const Engine& engine : engines())
-        for (const MatrixStorage storage : {MatrixStorage::column_major, MatrixStorage::row_major})
-            for (const TextForm form : {TextForm::glsl, TextForm::hlsl, TextForm::json}) {
-                CameraConventions conventions = engine.conventions;
-                conventions.storage = storage;
-                const std::string what = engine.name + (conventions.reversed_z ? " reversed Z" : "") +
-                                         (storage == MatrixStorage::column_major ? ", by columns" : ", by rows") +
-                                         ", form " + std::to_string(int(form));
-                const std::string text = camera_text(engine_view(camera, conventions),
-                                                     engine_projection(camera, conventions), storage, form);
-                const Camera imported = camera_from_engine(parse_engine_camera(text, storage, "engine.txt"),
-                                                           conventions, bounds, "engine.txt");
-                expect_same_camera(imported, camera, what);
-                expect_relative(glm::length(imported.target - imported.position),
-                                glm::length(bounds.center() - camera.position),
-                                what + ": target at the scene's centre");
-            }
+    for (const Camera& camera : {engine_camera(), orthographic_engine_camera()})
+        for (const Engine& engine : engines())
+            for (const MatrixStorage storage : {MatrixStorage::column_major, MatrixStorage::row_major})
+                for (const TextForm form : {TextForm::glsl, TextForm::hlsl, TextForm::json}) {
+                    CameraConventions conventions = engine.conventions;
+                    conventions.storage = storage;
+                    const std::string what = std::string(to_string(camera.projection)) + ", " + engine.name +
+                                             (conventions.reversed_z ? " reversed Z" : "") +
+                                             (storage == MatrixStorage::column_major ? ", by columns" : ", by rows") +
+                                             ", form " + std::to_string(int(form));
+                    const std::string text = camera_text(engine_view(camera, conventions),
+                                                         engine_projection(camera, conventions), storage, form);
+                    const Camera imported = camera_from_engine(parse_engine_camera(text, storage, "engine.txt"),
+                                                               conventions, bounds, "engine.txt");
+                    expect_same_camera(imported, camera, what);
+                    expect_relative(glm::length(imported.target - imported.position),
+                                    glm::length(bounds.center() - camera.position),
+                                    what + ": target at the scene's centre");
+                }
 }
 
 // Each text form read by its language's own order needs no storage named, and the conventions
@@ -212,14 +230,19 @@ TEST(CameraImport, WhatIsNotAPinholeIsRefusedNamingTheField) {
     off_centre[2][0] = 0.1;  // x / w shifted by the eye's depth
     glm::dmat4 infinite = projection;
     infinite[2][2] = -1.0, infinite[3][2] = -2.0 * camera.near;  // glm::infinitePerspective's depth row
-    const glm::dmat4 orthographic = glm::ortho(-4.0, 4.0, -2.5, 2.5, 0.3, 250.0);
+    const glm::dmat4 orthographic_off_centre = glm::ortho(-3.0, 5.0, -2.5, 2.5, 0.3, 250.0);
+    const glm::dmat4 orthographic_behind = glm::ortho(-4.0, 4.0, -2.5, 2.5, -1.0, 250.0);
+    glm::dmat4 orthographic_oblique = glm::ortho(-4.0, 4.0, -2.5, 2.5, 0.3, 250.0);
+    orthographic_oblique[2][0] = 0.1;  // x shifted by the eye's depth: an oblique (cabinet) projection
     const glm::dmat4 flip_y = from_rows({1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1});
     for (const auto& [text, reason] : std::vector<std::pair<std::string, std::string>>{
              {json_camera(skew * view, projection),
               "engine.json: camera.view: not a rigid view: its 3x3 part is skewed"},
              {json_camera(2.0 * view, projection), "camera.view: not a view: its last row"},
              {json_camera(view, singular), "engine.json: camera.projection: singular matrix"},
-             {json_camera(view, orthographic), "camera.projection: orthographic"},
+             {json_camera(view, orthographic_off_centre), "camera.projection: off-centre view box (entry (0, 3)"},
+             {json_camera(view, orthographic_oblique), "camera.projection: oblique: x depends on depth (entry (0, 2)"},
+             {json_camera(view, orthographic_behind), "camera.projection: its depth puts the near plane at -1"},
              {json_camera(view, off_centre), "camera.projection: asymmetric (off-centre) frustum (entry (0, 2)"},
              {json_camera(view, infinite), "camera.projection: the far plane lies at infinity"},
              {json_camera(kFlipZ * view, projection * kFlipZ), "camera.view: a mirror (determinant -1)"},

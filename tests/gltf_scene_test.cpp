@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <nlohmann/json.hpp>
 
@@ -163,14 +164,41 @@ TEST(GltfScene, WithACameraButNoLightTheSunStandsBehindThatCamera) {
     EXPECT_TRUE(mentions(scene.defaulted, "no KHR_lights_punctual light"));
 }
 
-TEST(GltfScene, AnOrthographicCameraIsNamedAndTheDefaultOneTakesItsPlace) {
+TEST(GltfScene, AnOrthographicCameraKeepsItsMagnificationsAndPlanes) {
     nlohmann::json gltf = two_camera_scene();
     gltf["cameras"][0] = {{"type", "orthographic"},
-                          {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 50}}}};
+                          {"orthographic", {{"xmag", 3}, {"ymag", 1.5}, {"znear", 0.1}, {"zfar", 50}}}};
     const GltfScene scene = read_gltf_scene(written(gltf));
-    EXPECT_TRUE(mentions(scene.defaulted, "cameras[0] is orthographic"));
-    EXPECT_TRUE(scene.scene.camera.frustum().contains(glm::dvec3(0.0, 2.0, 0.0)));
+    const Camera& camera = scene.scene.camera;
+    EXPECT_EQ(camera.projection, CameraProjection::orthographic);
+    EXPECT_DOUBLE_EQ(camera.half_height, 1.5);
+    EXPECT_DOUBLE_EQ(camera.aspect, 2.0);  // xmag / ymag
+    EXPECT_DOUBLE_EQ(camera.near, 0.1);
+    EXPECT_DOUBLE_EQ(camera.far, 50.0);
+    expect_near(camera.view_direction(), ahead_after_tilt(kMainCameraTilt));
     EXPECT_EQ(scene.scene.objects.size(), 2u);  // the file has cameras: a scene, no ground added
+}
+
+// Khronos's Cameras sample (Assimp's corpus, scripts/setup.sh): camera 1 is orthographic, xmag = ymag =
+// 1, znear 0.01, zfar 100, at (0.5, 0.5, 3) looking down -z at the square.
+TEST(GltfScene, TheCamerasSamplesSecondCameraIsOrthographic) {
+    const std::string file = "/usr/share/assimp/models/glTF2/cameras/Cameras.gltf";
+    ASSERT_TRUE(std::filesystem::exists(file)) << file << " missing: install assimp-testmodels (scripts/setup.sh)";
+    const Scene scene = load_scene(file, {.camera = 1});
+    const Camera& camera = scene.camera;
+    EXPECT_EQ(camera.projection, CameraProjection::orthographic);
+    EXPECT_DOUBLE_EQ(camera.half_height, 1.0);
+    EXPECT_DOUBLE_EQ(camera.aspect, 1.0);
+    EXPECT_DOUBLE_EQ(camera.near, 0.01);
+    EXPECT_DOUBLE_EQ(camera.far, 100.0);
+    expect_near(camera.position, {0.5, 0.5, 3.0});
+    expect_near(camera.view_direction(), {0.0, 0.0, -1.0});
+    // Its view is the box |x - 0.5| <= 1, |y - 0.5| <= 1 from z = 2.99 down to z = -97.
+    const Frustum box = camera.frustum();
+    EXPECT_TRUE(box.contains({1.45, -0.45, -50.0}, kTolerance));
+    EXPECT_FALSE(box.contains({1.55, 0.5, 0.0}, kTolerance));
+    EXPECT_FALSE(box.contains({0.5, 0.5, 2.995}, kTolerance));
+    EXPECT_EQ(load_scene(file, {.camera = 0}).camera.projection, CameraProjection::perspective);
 }
 
 TEST(GltfScene, ABinaryGlbOpensLikeItsJson) {

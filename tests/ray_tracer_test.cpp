@@ -80,7 +80,7 @@ TEST(RayTracerScene, TheWidestViewIsTraced) {
     scene.camera.fov_y_deg = std::nextafter(180.0, 0.0);
     scene.camera.aspect = 1e3;
     constexpr int kSide = 16;
-    const glm::dvec3 corner_ray = CameraRays(scene.camera, kSide, kSide).direction(0, 0);
+    const glm::dvec3 corner_ray = CameraRays(scene.camera, kSide, kSide).ray(0, 0).direction;
     ASSERT_GT(std::max({std::abs(corner_ray.x), std::abs(corner_ray.y), std::abs(corner_ray.z)}), 1e18);
     EXPECT_NO_THROW(exact_reference(scene, tessellate(scene), kSide, kSide));
 }

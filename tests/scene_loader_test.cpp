@@ -174,7 +174,7 @@ TEST(SceneRejects, UnknownKeys) {
 
     scene = minimal();
     scene["camera"] = {{"fov", 60}};
-    expect_error(scene, "camera.fov", "allowed for the camera: position, target, up, fov_y_deg");
+    expect_error(scene, "camera.fov", "allowed for a perspective camera: projection, position, target, up, fov_y_deg");
 
     scene = minimal();
     scene["light"]["cone_deg"] = 30;
@@ -307,6 +307,31 @@ TEST(SceneRejects, FovOutOfRange) {
         scene["camera"] = {{"fov_y_deg", fov}};
         expect_error(scene, "camera.fov_y_deg", "expected an angle in (0, 180) degrees");
     }
+}
+
+TEST(SceneLoader, ReadsAnOrthographicCamera) {
+    json scene = minimal();
+    scene["camera"] = {{"projection", "orthographic"}, {"half_height", 12.5}, {"aspect", 2.0}};
+    const Scene loaded = parse_scene(scene.dump(), kFile);
+    EXPECT_EQ(loaded.camera.projection, CameraProjection::orthographic);
+    EXPECT_EQ(loaded.camera.half_height, 12.5);
+    EXPECT_EQ(loaded.camera.aspect, 2.0);
+    EXPECT_EQ(parse_scene(minimal().dump(), kFile).camera.projection, CameraProjection::perspective);
+}
+
+TEST(SceneRejects, AnOrthographicCameraByItsOwnKeysAndHalfHeight) {
+    json scene = minimal();
+    scene["camera"] = {{"projection", "orthographic"}, {"fov_y_deg", 60}};
+    expect_error(scene, "camera.fov_y_deg",
+                 "allowed for an orthographic camera: projection, position, target, up, half_height");
+    scene["camera"] = {{"projection", "fisheye"}};
+    expect_error(scene, "camera.projection", R"(expected one of "perspective", "orthographic", got "fisheye")");
+    for (double half_height : {0.0, -2.0}) {
+        scene["camera"] = {{"projection", "orthographic"}, {"half_height", half_height}};
+        expect_error(scene, "camera.half_height", "expected a positive number");
+    }
+    scene["camera"] = {{"projection", "orthographic"}, {"half_height", 1e13}};
+    expect_error(scene, "camera.half_height", "expected a number within");
 }
 
 TEST(SceneRejects, ZeroLightDirection) {

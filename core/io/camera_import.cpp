@@ -2,7 +2,9 @@
 // OpenGL's conventions, a right-handed eye space looking down -z and clip z / w in [-1, 1] from
 // the near plane to the far one; there glm::perspective's closed forms give the camera back:
 // P(1,1) = 1 / tan(fov / 2), P(0,0) = P(1,1) / aspect, P(2,2) = -(f + n) / (f - n),
-// P(2,3) = -2 f n / (f - n), P(3,2) = -1 (row, column).
+// P(2,3) = -2 f n / (f - n), P(3,2) = -1 (row, column); or glm::ortho's, for a projection whose last
+// row is (0, 0, 0, 1): P(1,1) = 1 / half height, P(0,0) = P(1,1) / aspect, P(2,2) = -2 / (f - n),
+// P(2,3) = -(f + n) / (f - n).
 #include "io/camera_import.hpp"
 
 #include <algorithm>
@@ -126,7 +128,7 @@ void check_view(const glm::dmat4& eye_from_world, const CameraConventions& c, co
                                                                      : set_other("looks_along", "minus_z")));
 }
 
-// ---- The projection: a symmetric perspective ----
+// ---- The projection: a symmetric perspective or orthographic one ----
 
 // The entry (row, column) that should be 0 and is not beyond `scale`'s share, named with `problem`.
 void expect_zero(const glm::dmat4& p, int r, int c, double scale, const std::string& problem, const std::string& file,
@@ -137,32 +139,55 @@ void expect_zero(const glm::dmat4& p, int r, int c, double scale, const std::str
                                shown(entry(p, r, c)) + ", row and column as applied to column vectors): unsupported");
 }
 
-// The projection scaled so that w = -z_eye, its shape checked.
-glm::dmat4 normalized_perspective(const glm::dmat4& gl_clip_from_eye, const CameraConventions& c,
-                                  const std::string& file, const std::string& field) {
-    if (is_singular(gl_clip_from_eye))
-        refuse_matrix_text(file, field, "singular matrix (determinant 0): no camera projection");
+// An orthographic projection's w does not depend on the eye's depth: its last row is (0, 0, 0, w).
+bool is_orthographic(const glm::dmat4& gl_clip_from_eye) {
     const glm::dvec4 w_row = row(gl_clip_from_eye, 3);
-    if (std::abs(w_row.z) <= kZeroTolerance * glm::length(w_row))
-        refuse_matrix_text(file, field,
-                           "orthographic (w does not depend on the eye's depth): unsupported, the scene's camera is a "
-                           "perspective one");
+    return std::abs(w_row.z) <= kZeroTolerance * glm::length(w_row);
+}
+
+// The projection scaled so that w = -z_eye (a pinhole) or w = 1 (orthographic: a homogeneous matrix
+// projects alike at any positive scale), its w row checked.
+glm::dmat4 normalized_w(const glm::dmat4& gl_clip_from_eye, const CameraConventions& c, const std::string& file,
+                        const std::string& field) {
+    const glm::dvec4 w_row = row(gl_clip_from_eye, 3);
+    if (is_orthographic(gl_clip_from_eye)) {
+        const glm::dmat4 p = gl_clip_from_eye / w_row.w;
+        expect_zero(p, 3, 0, 1.0, "not an orthographic projection's w", file, field);
+        expect_zero(p, 3, 1, 1.0, "not an orthographic projection's w", file, field);
+        return p;
+    }
     if (w_row.z > 0.0)
         refuse_matrix_text(file, field,
                            "w = +z in eye space: the camera looks the other way; " +
                                (c.looks_along == EyeForward::minus_z ? set_other("looks_along", "plus_z")
                                                                      : set_other("looks_along", "minus_z")));
-    const glm::dmat4 p = gl_clip_from_eye / -w_row.z;  // a homogeneous matrix: any positive scale projects alike
+    const glm::dmat4 p = gl_clip_from_eye / -w_row.z;
     expect_zero(p, 3, 0, 1.0, "not a pinhole's w", file, field);
     expect_zero(p, 3, 1, 1.0, "not a pinhole's w", file, field);
     expect_zero(p, 3, 3, 1.0, "not a pinhole's w", file, field);
+    return p;
+}
+
+// The projection normalized (normalized_w), its shape checked: x and y scaled only, centred, and a
+// depth that depends on the eye's depth alone. A pinhole's centre is in column 2 (x / w shifted by
+// z / w), an orthographic one's in column 3.
+glm::dmat4 normalized_projection(const glm::dmat4& gl_clip_from_eye, const CameraConventions& c,
+                                 const std::string& file, const std::string& field) {
+    if (is_singular(gl_clip_from_eye))
+        refuse_matrix_text(file, field, "singular matrix (determinant 0): no camera projection");
+    const glm::dmat4 p = normalized_w(gl_clip_from_eye, c, file, field);
+    const bool orthographic = is_orthographic(gl_clip_from_eye);
     const double x_scale = std::abs(entry(p, 0, 0)), y_scale = std::abs(entry(p, 1, 1));
+    const int centre = orthographic ? 3 : 2, other = orthographic ? 2 : 3;
+    const std::string off_centre = orthographic ? "off-centre view box" : "asymmetric (off-centre) frustum";
     expect_zero(p, 0, 1, x_scale, "skewed: x mixes in y", file, field);
     expect_zero(p, 1, 0, y_scale, "skewed: y mixes in x", file, field);
-    expect_zero(p, 0, 2, x_scale, "asymmetric (off-centre) frustum", file, field);
-    expect_zero(p, 1, 2, y_scale, "asymmetric (off-centre) frustum", file, field);
-    expect_zero(p, 0, 3, x_scale, "x shifted in clip space", file, field);
-    expect_zero(p, 1, 3, y_scale, "y shifted in clip space", file, field);
+    expect_zero(p, 0, centre, x_scale, off_centre, file, field);
+    expect_zero(p, 1, centre, y_scale, off_centre, file, field);
+    expect_zero(p, 0, other, x_scale, orthographic ? "oblique: x depends on depth" : "x shifted in clip space", file,
+                field);
+    expect_zero(p, 1, other, y_scale, orthographic ? "oblique: y depends on depth" : "y shifted in clip space", file,
+                field);
     const double depth_scale = std::max(std::abs(entry(p, 2, 2)), std::abs(entry(p, 2, 3)));
     expect_zero(p, 2, 0, depth_scale, "oblique near plane: depth depends on x", file, field);
     expect_zero(p, 2, 1, depth_scale, "oblique near plane: depth depends on y", file, field);
@@ -175,20 +200,13 @@ glm::dmat4 normalized_perspective(const glm::dmat4& gl_clip_from_eye, const Came
     return p;
 }
 
-// Near and far from P(2,2) = c, P(2,3) = d: n = d / (c - 1), f = d / (c + 1), within the scene's limits.
-// c + 1 = -2 n / (f - n), so far / near beyond the limit shows as c within 2 / limit of -1.
-std::pair<double, double> near_and_far(const glm::dmat4& p, const std::string& file, const std::string& field) {
-    const double c = entry(p, 2, 2), d = entry(p, 2, 3);
-    if (std::abs(c + 1.0) < 2.0 / limits::far_over_near_max)
-        refuse_matrix_text(file, field,
-                           "the far plane lies at infinity (or far / near beyond " +
-                               limits::shown(limits::far_over_near_max) +
-                               "): unsupported, the scene's camera needs a finite far plane");
-    const double near = d / (c - 1.0), far = d / (c + 1.0);
+// Near and far, checked within the scene's limits.
+std::pair<double, double> checked_near_and_far(double near, double far, const std::string& hint,
+                                               const std::string& file, const std::string& field) {
     if (!(near > 0.0 && far > near))
         refuse_matrix_text(file, field,
                            "its depth puts the near plane at " + shown(near) + " and the far one at " + shown(far) +
-                               ": not 0 < near < far; check clip_depth and reversed_z");
+                               ": not 0 < near < far; check " + hint);
     if (!limits::within(limits::length, near) || !limits::within(limits::length, far) ||
         far > limits::far_over_near_max * near)
         refuse_matrix_text(file, field,
@@ -196,6 +214,27 @@ std::pair<double, double> near_and_far(const glm::dmat4& p, const std::string& f
                                limits::shown(limits::length) + ", far / near at most " +
                                limits::shown(limits::far_over_near_max));
     return {near, far};
+}
+
+// A pinhole's near and far from P(2,2) = c, P(2,3) = d: n = d / (c - 1), f = d / (c + 1).
+// c + 1 = -2 n / (f - n), so far / near beyond the limit shows as c within 2 / limit of -1.
+std::pair<double, double> perspective_near_and_far(const glm::dmat4& p, const std::string& file,
+                                                   const std::string& field) {
+    const double c = entry(p, 2, 2), d = entry(p, 2, 3);
+    if (std::abs(c + 1.0) < 2.0 / limits::far_over_near_max)
+        refuse_matrix_text(file, field,
+                           "the far plane lies at infinity (or far / near beyond " +
+                               limits::shown(limits::far_over_near_max) +
+                               "): unsupported, the scene's camera needs a finite far plane");
+    return checked_near_and_far(d / (c - 1.0), d / (c + 1.0), "clip_depth and reversed_z", file, field);
+}
+
+// An orthographic camera's near and far from P(2,2) = c = -2 / (f - n), P(2,3) = d = -(f + n) / (f - n)
+// (glm::ortho): n = (d + 1) / c, f = (d - 1) / c.
+std::pair<double, double> orthographic_near_and_far(const glm::dmat4& p, const std::string& file,
+                                                    const std::string& field) {
+    const double c = entry(p, 2, 2), d = entry(p, 2, 3);
+    return checked_near_and_far((d + 1.0) / c, (d - 1.0) / c, "clip_depth, reversed_z and looks_along", file, field);
 }
 
 }  // namespace
@@ -233,10 +272,12 @@ Camera camera_from_engine(const EngineCamera& engine, const CameraConventions& c
     const glm::dmat4 flip = z_flip(conventions);  // its own inverse
     const glm::dmat4 eye_from_world = flip * engine.eye_from_world;
     check_view(eye_from_world, conventions, file, engine.view_field);
+    const glm::dmat4 gl_clip_from_eye = gl_clip_from_engine_clip(conventions) * engine.clip_from_eye * flip;
     const glm::dmat4 clip_from_eye =
-        normalized_perspective(gl_clip_from_engine_clip(conventions) * engine.clip_from_eye * flip, conventions, file,
-                               engine.projection_field);
-    const auto [near, far] = near_and_far(clip_from_eye, file, engine.projection_field);
+        normalized_projection(gl_clip_from_eye, conventions, file, engine.projection_field);
+    const bool orthographic = is_orthographic(gl_clip_from_eye);
+    const auto [near, far] = orthographic ? orthographic_near_and_far(clip_from_eye, file, engine.projection_field)
+                                          : perspective_near_and_far(clip_from_eye, file, engine.projection_field);
 
     // The eye's axes in world space are the rotation's rows; the eye sits where the view sends to 0.
     const glm::dmat3 rotation(eye_from_world);
@@ -250,10 +291,13 @@ Camera camera_from_engine(const EngineCamera& engine, const CameraConventions& c
     return {.position = position,
             .target = position + std::max(to_centre, near) * ahead,
             .up = glm::dvec3(row(eye_from_world, 1)),
-            .fov_y_deg = glm::degrees(2.0 * std::atan(1.0 / entry(clip_from_eye, 1, 1))),
+            .fov_y_deg =
+                orthographic ? Camera{}.fov_y_deg : glm::degrees(2.0 * std::atan(1.0 / entry(clip_from_eye, 1, 1))),
             .aspect = aspect,
             .near = near,
-            .far = far};
+            .far = far,
+            .projection = orthographic ? CameraProjection::orthographic : CameraProjection::perspective,
+            .half_height = orthographic ? 1.0 / entry(clip_from_eye, 1, 1) : Camera{}.half_height};
 }
 
 Camera import_camera(const std::string& file, const CameraConventions& conventions, const Aabb& scene_bounds) {

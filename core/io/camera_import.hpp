@@ -16,10 +16,11 @@
 // clip depth and reversed Z, and two of the camera's own: which way clip y runs (Vulkan's down the
 // image) and which way the eye looks (OpenGL's right-handed -z, Direct3D's left-handed +z).
 //
-// The camera must be a pinhole: a rigid view (rotation and translation), a symmetric perspective
-// projection with a finite far plane. Anything else is refused with std::invalid_argument, one line
-// naming the file, the matrix and what is wrong (a singular matrix, a skewed or scaled view, an
-// orthographic, off-centre or oblique projection, an infinite far plane, a convention that does not fit).
+// The camera must be a pinhole or an orthographic one: a rigid view (rotation and translation), a
+// symmetric perspective projection with a finite far plane or a centred orthographic one (its last row
+// (0, 0, 0, 1)). Anything else is refused with std::invalid_argument, one line naming the file, the
+// matrix and what is wrong (a singular matrix, a skewed or scaled view, an off-centre or oblique
+// projection, an infinite far plane, a convention that does not fit).
 #include <map>
 #include <string>
 #include <vector>
@@ -67,7 +68,7 @@ struct EngineCamera {
 
 EngineCamera parse_engine_camera(const std::string& text, MatrixStorage storage, const std::string& file);
 
-// The pinhole the matrices describe, under `conventions`. Its target, about which the window
+// The camera the matrices describe, under `conventions`. Its target, about which the window
 // orbits and of which the matrices give only the direction, lies ahead at the distance of the
 // scene's centre (as a glTF camera's: scene/gltf_scene.cpp).
 Camera camera_from_engine(const EngineCamera& engine, const CameraConventions& conventions, const Aabb& scene_bounds,

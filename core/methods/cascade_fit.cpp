@@ -14,6 +14,9 @@ Frustum depth_slice(const Camera& camera, double near, double far) {
 }
 
 Sphere slice_sphere(const Camera& camera, double near, double far) {
+    if (camera.is_orthographic())  // a box: its centre, and half its diagonal
+        return {.centre = camera.position + (near + far) / 2.0 * camera.view_direction(),
+                .radius = std::hypot((far - near) / 2.0, glm::length(camera.half_extent_at(far)))};
     const double k = std::tan(glm::radians(camera.fov_y_deg) / 2.0) * std::sqrt(1.0 + camera.aspect * camera.aspect);
     const double t = std::min((near + far) * (1.0 + k * k) / 2.0, far);
     return {.centre = camera.position + t * camera.view_direction(), .radius = std::hypot(far - t, far * k)};

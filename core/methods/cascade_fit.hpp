@@ -22,7 +22,8 @@ struct Sphere {
 // The smallest sphere through the slice's corners. The frustum is symmetric, so the centre lies on
 // its axis at t where the near and far corners are equally far, (t - n)² + (n k)² = (f - t)² + (f k)²
 // (k = tan(fov/2) sqrt(1 + aspect²)): t = (n + f)(1 + k²)/2, at most f. Its radius depends on n, f, the
-// field of view and the aspect only: not on where the camera looks.
+// field of view and the aspect only: not on where the camera looks. An orthographic camera's slice is
+// a box: centred at t = (n + f)/2, its radius half the box's diagonal.
 Sphere slice_sphere(const Camera& camera, double near, double far);
 
 // The snap grid: 256 cells per tile side. A tile of any multiple of 256 texels per side (a 512²

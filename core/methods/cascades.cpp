@@ -112,6 +112,11 @@ CascadeOptions read_options(const Settings& s, const ShadowInputs& in, std::vect
     // A warp follows the camera: there is no still box to snap, nor one whose bounds a tile test could read.
     if (o.lispsm && o.stabilize) refuse("stabilize", "on", "a LiSPSM warp moves with the camera (use warp=none)");
     if (o.lispsm && o.by_tile) refuse("select", "tile", "tile bounds need the light-space boxes (use warp=none)");
+    if (o.lispsm && in.camera.is_orthographic()) {
+        o.lispsm = false;
+        fallbacks.push_back(Note{NoteKind::orthographic_camera,
+                                 "cascades' LiSPSM warp: the camera is orthographic, nothing to warp; box fits used"});
+    }
     const size_t fallbacks_before = fallbacks.size();
     const DepthRange bounds = depth_bounds(in, s, fallbacks);
     o.visible_bounds = cascades_read_visible_depths(s) && fallbacks.size() == fallbacks_before;

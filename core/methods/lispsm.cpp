@@ -237,7 +237,7 @@ void record_light_perspective(Trace& t, const LispsmSpace& space, const LispsmWa
 
 ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* trace) {
     ShadowSetup setup;
-    const auto region = start_warp_in_reach(in, s, setup, trace);
+    const auto region = start_warp_in_reach("lispsm", in, s, setup, trace);
     if (!region) return setup;
     if (in.light.type == LightType::point) {
         fall_back_to_focused(Note{NoteKind::no_light_axis,

@@ -90,7 +90,7 @@ std::vector<SettingSpec> psm_settings() {
 
 ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace) {
     ShadowSetup setup;
-    const auto region = start_warp_in_reach(in, s, setup, trace);
+    const auto region = start_warp_in_reach("psm", in, s, setup, trace);
     if (!region) return setup;
     const std::vector<glm::dvec3>& ws_body = region->ws_points;  // B, or a spot light's reach of B
 

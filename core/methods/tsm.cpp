@@ -298,7 +298,7 @@ glm::dmat4 trapezoid_to_square(const Trapezoid& z, const Focus& f, const std::ve
 
 ShadowSetup compute_tsm(const ShadowInputs& in, const Settings& s, Trace* trace) {
     ShadowSetup setup;
-    const auto body = start_warp("tsm", in, s, setup, trace);
+    const auto body = start_perspective_warp("tsm", in, s, setup, trace);
     if (!body) return setup;
 
     const LightView ls = light_view(in, *body, trace);

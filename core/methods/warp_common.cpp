@@ -25,10 +25,34 @@ std::optional<IntersectionBody> start_warp(const std::string& method, const Shad
     return body;
 }
 
-std::optional<WarpRegion> start_warp_in_reach(const ShadowInputs& in, const Settings& settings, ShadowSetup& setup,
-                                              Trace* trace) {
+namespace {
+
+// Under an orthographic camera the view's post-perspective space is an affine image of the world: a
+// warp that adapts the map to the camera's perspective (PSM's, LiSPSM's with n = infinity, TSM's
+// trapezoid become a rectangle, XPSM's) has nothing to do. Names the fallback; true when taken.
+bool falls_back_for_orthographic(const std::string& method, const ShadowInputs& in, const IntersectionBody& body,
+                                 ShadowSetup& setup, Trace* trace) {
+    if (!in.camera.is_orthographic()) return false;
+    fall_back_to_focused(Note{NoteKind::orthographic_camera,
+                              method + " warps a perspective view; the camera is orthographic: nothing to warp, "
+                                       "focused map used"},
+                         in, body, setup, trace);
+    return true;
+}
+
+}  // namespace
+
+std::optional<IntersectionBody> start_perspective_warp(const std::string& method, const ShadowInputs& in,
+                                                       const Settings& settings, ShadowSetup& setup, Trace* trace) {
+    auto body = start_warp(method, in, settings, setup, trace);
+    if (body && falls_back_for_orthographic(method, in, *body, setup, trace)) return std::nullopt;
+    return body;
+}
+
+std::optional<WarpRegion> start_warp_in_reach(const std::string& method, const ShadowInputs& in,
+                                              const Settings& settings, ShadowSetup& setup, Trace* trace) {
     auto body = body_or_uniform(in, settings, setup, trace);
-    if (!body) return std::nullopt;
+    if (!body || falls_back_for_orthographic(method, in, *body, setup, trace)) return std::nullopt;
     if (in.light.type != LightType::spot) return WarpRegion{*body, body->body.vertices};
     std::vector<glm::dvec3> reach = spot_reach(in.light, body->body, trace);
     if (reach.empty()) {

@@ -17,6 +17,11 @@ namespace shadowlab {
 std::optional<IntersectionBody> start_warp(const std::string& method, const ShadowInputs& inputs,
                                            const Settings& settings, ShadowSetup& setup, Trace* trace);
 
+// start_warp for a warp of the camera's perspective (TSM, XPSM): nullopt also when the camera is
+// orthographic (nothing to warp: focused map, named orthographic_camera).
+std::optional<IntersectionBody> start_perspective_warp(const std::string& method, const ShadowInputs& inputs,
+                                                       const Settings& settings, ShadowSetup& setup, Trace* trace);
+
 // What a warp that handles spot and point lights (PSM, LiSPSM) covers: the body and the world points
 // its map must hold, B's vertices or, for a spot light, its reach of B (spot_reach).
 struct WarpRegion {
@@ -24,9 +29,9 @@ struct WarpRegion {
     std::vector<glm::dvec3> ws_points;
 };
 // start_warp for such a warp: nullopt when `setup` was completed by a named fallback instead (an
-// empty body: uniform map; a view the spot does not light: focused map).
-std::optional<WarpRegion> start_warp_in_reach(const ShadowInputs& inputs, const Settings& settings, ShadowSetup& setup,
-                                              Trace* trace);
+// empty body: uniform map; an orthographic camera or a view the spot does not light: focused map).
+std::optional<WarpRegion> start_warp_in_reach(const std::string& method, const ShadowInputs& inputs,
+                                              const Settings& settings, ShadowSetup& setup, Trace* trace);
 
 // The vertices of B cut to a pyramid circumscribing the spot's cone (only there does the spot light
 // anything), the apex left out: no caster lies at the light, and a perspective map cannot hold its own

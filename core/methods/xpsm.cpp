@@ -226,7 +226,7 @@ Aabb visible_receivers_box(const Aabb& ppls_receivers_box, const ConvexPolyhedro
 
 ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace) {
     ShadowSetup setup;
-    const auto body = start_warp("xpsm", in, s, setup, trace);
+    const auto body = start_perspective_warp("xpsm", in, s, setup, trace);
     if (!body) return setup;
     const std::vector<glm::dvec3> ws_receivers = corners_within(in.receivers, body->visible.bounds());
     const std::vector<glm::dvec3> ws_casters = corners_within(in.casters, body->body.bounds());

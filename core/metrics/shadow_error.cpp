@@ -51,10 +51,11 @@ long neighbour(const ReferenceImage& ref, int x, int y, int dx, int dy, double& 
     return -1;
 }
 
-// Where the eye's ray through `seen` meets the plane through p with normal n.
-glm::dvec3 along_ray_onto_plane(const glm::dvec3& eye, const glm::dvec3& seen, const glm::dvec3& p,
+// Where the camera's ray through `seen` (from the eye, or parallel to the view for an orthographic
+// camera) meets the plane through p with normal n.
+glm::dvec3 along_ray_onto_plane(const Camera& camera, const glm::dvec3& seen, const glm::dvec3& p,
                                 const glm::dvec3& n) {
-    const glm::dvec3 ray = seen - eye;
+    const glm::dvec3 eye = camera.eye_of(seen), ray = seen - eye;
     return eye + ray * (glm::dot(n, p - eye) / glm::dot(n, ray));
 }
 
@@ -90,10 +91,10 @@ PixelAliasing pixel_aliasing(const Scene& scene, const ReferenceImage& ref, cons
     };
     const double m = texel_extent(ref.position[right], ref.position[down]);
     if (m <= 0.0) return {};
-    const glm::dvec3 eye = scene.camera.position;
-    const glm::dvec3 halfway = glm::normalize(glm::normalize(eye - p) - along_light(scene.light, p));
-    const double perspective = texel_extent(along_ray_onto_plane(eye, ref.position[right], p, halfway),
-                                            along_ray_onto_plane(eye, ref.position[down], p, halfway));
+    const Camera& camera = scene.camera;
+    const glm::dvec3 halfway = glm::normalize(glm::normalize(camera.eye_of(p) - p) - along_light(scene.light, p));
+    const double perspective = texel_extent(along_ray_onto_plane(camera, ref.position[right], p, halfway),
+                                            along_ray_onto_plane(camera, ref.position[down], p, halfway));
     if (perspective <= 0.0) return {m, 0.0, 0.0};
     return {m, perspective, m / perspective};
 }

@@ -34,6 +34,9 @@ const std::vector<NoteInfo>& all_note_kinds() {
         {no_light_axis, F, "point light without an axis",
          "the warp runs after the light's own perspective, which needs an axis and a cone: the focused map"},
         {no_matrices, F, "no matrices", "the custom method's matrices setting names no file: the focused map"},
+        {orthographic_camera, F, "orthographic camera",
+         "its rays are parallel, so its post-perspective space is an affine image of the world and the view spreads "
+         "texels evenly in depth: nothing to warp, the focused map"},
         {warp_loses, F, "warp loses to the focused map",
          "measured, the warp misclassifies more than twice the focused map's share (and 0.05 percentage points "
          "more): the cause and the numbers follow; the focused map serves this view better"},

@@ -31,6 +31,7 @@ enum class NoteKind {
     warp_not_needed,
     no_light_axis,
     no_matrices,
+    orthographic_camera,
     // Found when a warp is measured against the reference.
     warp_loses,
     // Fallbacks of the lookups' filters.

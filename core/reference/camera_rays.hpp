@@ -1,6 +1,7 @@
 #pragma once
-// The camera's eye rays, one through each pixel centre (row 0 at the top of the image), shared by
-// the exact reference and the geometric techniques so that both judge the same points.
+// The camera's primary rays, one through each pixel centre (row 0 at the top of the image), shared
+// by the exact reference and the geometric techniques so that both judge the same points: from the
+// eye for a pinhole, parallel along the view direction for an orthographic camera.
 #include <glm/glm.hpp>
 
 #include "scene/camera.hpp"
@@ -13,20 +14,18 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
-    const glm::dvec3& eye() const { return eye_; }
-    // World direction through pixel (x, y), scaled so that a ray's t along it is the view depth.
-    glm::dvec3 direction(int x, int y) const;
+    // The world ray through pixel (x, y), scaled so that a ray's t along it is the view depth.
+    EyeRay ray(int x, int y) const;
     // The view depth of a world point: its t along its pixel's ray.
-    double view_depth(const glm::dvec3& p) const { return glm::dot(p - eye_, forward_); }
+    double view_depth(const glm::dvec3& p) const { return glm::dot(p - camera_.position, forward_); }
     // Continuous pixel coordinates of a normalized device point (x, y in [-1, 1]); pixel centres
     // sit at integers.
     glm::dvec2 pixel_of_ndc(const glm::dvec2& ndc) const;
 
 private:
+    Camera camera_;
     int width_, height_;
-    glm::dvec3 eye_, forward_;
-    glm::dmat3 view_to_world_;  // a rotation: t stays the view depth
-    double focal_x_, focal_y_;  // the projection's scale of x and y
+    glm::dvec3 forward_;
 };
 
 }  // namespace shadowlab

@@ -36,11 +36,11 @@ std::array<glm::dvec3, 3> corners(const WorldTriangles& triangles, int triangle)
 
 double largest_coordinate(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
-// Where the ray from the eye (the origin) along `direction` meets the triangle's plane: exact in
-// double, where Embree's float32 barycentric weights would place the point off the pixel's ray.
-glm::dvec3 on_plane(const std::array<glm::dvec3, 3>& triangle, const glm::dvec3& direction) {
+// Where the pixel's ray meets the triangle's plane: exact in double, where Embree's float32
+// barycentric weights would place the point off the pixel's ray.
+glm::dvec3 on_plane(const std::array<glm::dvec3, 3>& triangle, const EyeRay& ray) {
     const glm::dvec3 normal = glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]);
-    return direction * (glm::dot(normal, triangle[0]) / glm::dot(normal, direction));
+    return ray.origin + ray.direction * (glm::dot(normal, triangle[0] - ray.origin) / glm::dot(normal, ray.direction));
 }
 
 // kOffsetUlps float32 steps at the largest coordinate of p and the triangle (camera-relative).
@@ -63,7 +63,7 @@ bool sees_light(const RayTracer& tracer, const Light& light, const std::array<gl
     return !tracer.blocked(origin, light.position - origin, 1.0);  // t = 1 at the light
 }
 
-// The unit normal of the triangle's side seen from `eye`.
+// The unit normal of the triangle's side seen from `eye` (the point the camera sees p from).
 glm::dvec3 seen_normal(const std::array<glm::dvec3, 3>& triangle, const glm::dvec3& p, const glm::dvec3& eye) {
     const glm::dvec3 normal = glm::normalize(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
     return glm::dot(normal, eye - p) < 0.0 ? -normal : normal;
@@ -96,7 +96,7 @@ enum class ShadowRays { traced, skipped, area };
 ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles, int width, int height,
                             ShadowRays shadow_rays, int samples = 0) {
     const Camera& camera = scene.camera;
-    const glm::dvec3 origin = camera.position;  // the tracer's: the eye at 0
+    const glm::dvec3 origin = camera.position;  // the tracer's: the camera's position at 0
     const WorldTriangles local = relative_to(triangles, origin);
     const RayTracer tracer(local, caster_flags(scene));
     Light local_light = scene.light;
@@ -118,12 +118,13 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
     }
     auto trace_row = [&](int y) {
         for (int x = 0; x < width; ++x) {
-            const glm::dvec3 direction = rays.direction(x, y);
-            const std::optional<Hit> hit = tracer.first_hit(glm::dvec3(0.0), direction, camera.near, camera.far);
+            const EyeRay world_ray = rays.ray(x, y);
+            const EyeRay ray{.origin = world_ray.origin - origin, .direction = world_ray.direction};
+            const std::optional<Hit> hit = tracer.first_hit(ray.origin, ray.direction, camera.near, camera.far);
             if (!hit) continue;
             const std::array<glm::dvec3, 3> triangle = corners(triangles, hit->triangle);
             const std::array<glm::dvec3, 3> local_triangle = corners(local, hit->triangle);
-            const glm::dvec3 local_p = on_plane(local_triangle, direction);
+            const glm::dvec3 local_p = on_plane(local_triangle, ray);
             const glm::dvec3 p = origin + local_p;
             const std::size_t i = static_cast<std::size_t>(y) * width + x;
             image.position[i] = p;
@@ -131,7 +132,7 @@ ReferenceImage trace_camera(const Scene& scene, const WorldTriangles& triangles,
             image.visible[i] = 1;
             if (shadow_rays == ShadowRays::skipped) continue;
             image.lit[i] = sees_light(tracer, local_light, local_triangle, local_p);
-            image.normal[i] = seen_normal(triangle, p, camera.position);
+            image.normal[i] = seen_normal(triangle, p, camera.eye_of(p));
             image.facing[i] = float(facing_light(scene.light, image.normal[i], p));
             if (shadow_rays == ShadowRays::area)
                 image.visibility[i] =

@@ -39,6 +39,7 @@ constexpr double kRangeNearShare = 1e-3;
 // A camera without `zfar` has its far plane at infinity; ShadowLab's camera needs a finite one, this
 // many times the distance from the eye to the meshes' farthest corner.
 constexpr double kFarBeyondMeshes = 2.0;
+constexpr double kOrthographicNearShare = 1e-6;  // an orthographic camera's znear 0, as a share of zfar
 // A spot's default outer cone angle (KHR_lights_punctual), from its axis.
 constexpr double kDefaultOuterConeAngle = std::numbers::pi / 4.0;
 
@@ -358,10 +359,13 @@ Light placed_light(Light light, const glm::dmat4& world_from_node) {
     return light;
 }
 
-// A perspective camera as the file gives it, and the node that places it.
+// A camera as the file gives it, and the node that places it.
 struct PlacedLens {
-    std::string path;  // cameras[i].perspective
-    double yfov, znear;
+    std::string path;  // cameras[i].perspective or cameras[i].orthographic
+    CameraProjection projection = CameraProjection::perspective;
+    double yfov = 0.0;  // perspective
+    double ymag = 0.0;  // orthographic: half the view's height
+    double znear = 0.0;
     std::optional<double> aspect, zfar;
     glm::dmat4 world_from_camera;
 };
@@ -374,8 +378,8 @@ public:
                 std::vector<std::string>& defaulted)
         : fields_(fields), root_(root), placements_(placements), defaulted_(defaulted) {}
 
-    // The chosen camera's lens and node, or nullopt (said in `defaulted`) when the file has no camera,
-    // the chosen one is orthographic or no node holds it.
+    // The chosen camera's lens and node, or nullopt (said in `defaulted`) when the file has no camera
+    // or no node holds the chosen one.
     std::optional<PlacedLens> lens(std::size_t chosen) const {
         const json& cameras = cameras_of(fields_, root_);
         if (cameras.empty()) {
@@ -386,15 +390,10 @@ public:
         }
         const std::string path = indexed("cameras", chosen);
         const std::string type = fields_.text(cameras[chosen], path, "type");
-        if (type == "orthographic") {
-            defaulted_.push_back(path +
-                                 " is orthographic, and ShadowLab's camera a perspective pinhole: the default "
-                                 "camera instead, looking at the meshes from the front and above");
-            return std::nullopt;
-        }
-        if (type != "perspective")
+        if (type != "perspective" && type != "orthographic")
             fields_.fail(path + ".type", "expected \"perspective\" or \"orthographic\", got \"" + type + "\"");
-        PlacedLens lens = perspective(cameras[chosen], path);
+        PlacedLens lens =
+            type == "perspective" ? perspective(cameras[chosen], path) : orthographic(cameras[chosen], path);
         const auto placed = placements_.world_from_camera.find(chosen);
         if (placed == placements_.world_from_camera.end()) {
             defaulted_.push_back(path + " is held by no node of the scene: the default camera instead");
@@ -442,6 +441,32 @@ private:
         return out;
     }
 
+    // glTF 2.0, "Orthographic projection": xmag and ymag the view's half width and height, zfar
+    // required, znear >= 0 (0 is read as zfar / 1e6: ShadowLab's near plane is in front of the eye).
+    PlacedLens orthographic(const json& camera, const std::string& camera_path) const {
+        const std::string path = camera_path + ".orthographic";
+        const json* lens = fields_.member(camera, camera_path, "orthographic");
+        if (!lens) fields_.fail(path, "required for an orthographic camera, but missing");
+        const double xmag = fields_.required_number(*lens, path, "xmag");
+        PlacedLens out{.path = path,
+                       .projection = CameraProjection::orthographic,
+                       .ymag = fields_.required_number(*lens, path, "ymag"),
+                       .znear = fields_.required_number(*lens, path, "znear"),
+                       .zfar = fields_.required_number(*lens, path, "zfar"),
+                       .world_from_camera = glm::dmat4(1.0)};
+        fields_.expect(xmag > 0.0, path + ".xmag", "a positive half width", xmag);
+        fields_.expect(out.ymag > 0.0, path + ".ymag", "a positive half height", out.ymag);
+        fields_.expect(out.znear >= 0.0, path + ".znear", "a distance of 0 or more", out.znear);
+        fields_.expect(*out.zfar > out.znear, path + ".zfar", "a distance beyond znear (" + shown(out.znear) + ")",
+                       *out.zfar);
+        out.aspect = xmag / out.ymag;
+        if (out.znear == 0.0) {
+            out.znear = *out.zfar * kOrthographicNearShare;
+            defaulted_.push_back(path + " has znear 0: near = " + shown(out.znear) + ", zfar / 1e6");
+        }
+        return out;
+    }
+
     // KHR_lights_punctual: a light's type, its spot cone and its range, before a node places it.
     Light punctual_light(const json& light, const std::string& path) const {
         const std::string type = fields_.text(light, path, "type");
@@ -480,7 +505,11 @@ private:
 // about, lies ahead at the distance of the meshes' centre.
 Camera placed_camera(const PlacedLens& lens, const Aabb& meshes, std::vector<std::string>& defaulted) {
     Camera camera;
-    camera.fov_y_deg = glm::degrees(lens.yfov);
+    camera.projection = lens.projection;
+    if (camera.is_orthographic())
+        camera.half_height = lens.ymag;
+    else
+        camera.fov_y_deg = glm::degrees(lens.yfov);
     camera.near = lens.znear;
     camera.position = world_point(lens.world_from_camera, glm::dvec3(0.0));
     camera.up = world_direction(lens.world_from_camera, {0.0, 1.0, 0.0});

@@ -3,8 +3,11 @@
 // camera does not use is an error.
 //
 // { "name": "...", "description": "...",
-//   "camera":  {"position": [x,y,z], "target": [x,y,z], "up": [0,1,0],
-//               "fov_y_deg": 60, "aspect": 1.7778, "near": 0.1, "far": 100},
+//   "camera":  {"projection": "perspective" | "orthographic",
+//               "position": [x,y,z], "target": [x,y,z], "up": [0,1,0],
+//               "fov_y_deg": 60,                                 // perspective
+//               "half_height": 1,                                // orthographic: half the view's height
+//               "aspect": 1.7778, "near": 0.1, "far": 100},
 //   "light":   {"type": "directional" | "spot" | "point",         // required object
 //               "direction": [x,y,z],                            // directional, spot
 //               "position": [x,y,z],                             // spot, point
@@ -27,11 +30,11 @@
 //   "objects": {"<object name>": {"casts": true, "receives": true}}}
 //
 // Numeric rules (validate_scene; the ranges are limits.hpp's): all numbers finite; positions
-// within ±1e12, and so every corner of a placed object; sizes, radius, height, near and far in
-// [1e-6, 1e12]; scale in [1e-6, 1e6]; aspect in [1e-3, 1e3]; near < far <= 1e9 near; fov_y_deg and
-// cone_deg in (0, 180); directions non-zero (normalised after loading); camera target != position
-// and up not parallel to the view direction; a light range 0 < near < far within [1e-6, 1e12]; a
-// spot or point light outside every caster (a map from inside a box sees only the box).
+// within ±1e12, and so every corner of a placed object; sizes, radius, height, near, far and
+// half_height in [1e-6, 1e12]; scale in [1e-6, 1e6]; aspect in [1e-3, 1e3]; near < far <= 1e9 near;
+// fov_y_deg and cone_deg in (0, 180); directions non-zero (normalised after loading); camera target
+// != position and up not parallel to the view direction; a light range 0 < near < far within
+// [1e-6, 1e12]; a spot or point light outside every caster (a map from inside a box sees only the box).
 #include "scene/scene_loader.hpp"
 
 #include <algorithm>
@@ -66,6 +69,7 @@ constexpr std::size_t kMaxShownChars = 80;  // longer JSON values are shortened 
 
 constexpr std::array kShapes{Shape::box, Shape::sphere, Shape::plane, Shape::cylinder, Shape::mesh};
 constexpr std::array kLightTypes{LightType::directional, LightType::spot, LightType::point};
+constexpr std::array kProjections{CameraProjection::perspective, CameraProjection::orthographic};
 
 std::string join_path(const std::string& path, const std::string& key) {
     return path.empty() ? key : path + "." + key;
@@ -183,6 +187,11 @@ json parse_json(const std::string& text, const std::string& file) {
 
 // ---- JSON structure: keys and types --------------------------------------------------------
 
+std::vector<std::string> camera_keys(CameraProjection projection) {
+    const char* lens = projection == CameraProjection::orthographic ? "half_height" : "fov_y_deg";
+    return {"projection", "position", "target", "up", lens, "aspect", "near", "far"};
+}
+
 std::vector<std::string> light_keys(LightType type) {
     switch (type) {
         case LightType::directional:
@@ -299,6 +308,9 @@ private:
     void parse(const json& value, const std::string& path, LightType& out) const {
         out = parse_enum(value, path, kLightTypes);
     }
+    void parse(const json& value, const std::string& path, CameraProjection& out) const {
+        out = parse_enum(value, path, kProjections);
+    }
     template <class T>
     void read_field(const json& object, const std::string& path, const char* key, T& out) const {
         if (const json* value = find_field(object, key)) parse(*value, join_path(path, key), out);
@@ -328,13 +340,15 @@ private:
     Camera read_camera(const json& value) const {
         const std::string path = "camera";
         expect_object(value, path);
-        check_keys(value, path, {"position", "target", "up", "fov_y_deg", "aspect", "near", "far"},
-                   "the camera");
         Camera camera;
+        read_field(value, path, "projection", camera.projection);
+        check_keys(value, path, camera_keys(camera.projection),
+                   std::string(camera.is_orthographic() ? "an " : "a ") + to_string(camera.projection) + " camera");
         read_field(value, path, "position", camera.position);
         read_field(value, path, "target", camera.target);
         read_field(value, path, "up", camera.up);
         read_field(value, path, "fov_y_deg", camera.fov_y_deg);
+        read_field(value, path, "half_height", camera.half_height);
         read_field(value, path, "aspect", camera.aspect);
         read_field(value, path, "near", camera.near);
         read_field(value, path, "far", camera.far);
@@ -531,7 +545,10 @@ private:
             glm::length(glm::cross(normalize_safely(camera.up), camera.view_direction()));
         expect(sine > kMinSineToView, "camera.up", "a direction not parallel to the view direction",
                components(camera.up));
-        angle(camera.fov_y_deg, "camera.fov_y_deg");
+        if (camera.is_orthographic())
+            positive({camera.half_height}, "camera.half_height", limits::length);
+        else
+            angle(camera.fov_y_deg, "camera.fov_y_deg");
         positive({camera.aspect}, "camera.aspect", limits::aspect);
         positive({camera.near}, "camera.near", limits::length);
         check_far(camera.near, camera.far);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "math/stopwatch.hpp"
 #include "methods/step_figures.hpp"
@@ -199,6 +200,10 @@ void record_count(Trace* trace, const StencilCounts& c, const ReferenceImage& im
 
 GeometryResult compute_volumes(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
                                 const Settings& settings, Trace* trace) {
+    // The stencil pass rasterizes the volumes from an eye point (raster/polygon_spans.hpp).
+    if (scene.camera.is_orthographic())
+        throw std::invalid_argument("volumes: an orthographic camera is not supported (the stencil pass "
+                                    "rasterizes from an eye point); use a map method or planar");
     const CountRule rule = settings.choice("count") == "zpass" ? CountRule::zpass : CountRule::zfail;
     GeometryResult r;
     const Stopwatch setup;

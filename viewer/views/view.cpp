@@ -163,6 +163,8 @@ void place_scene_camera(vtkRenderer* renderer, const Camera& camera) {
     vtk->SetFocalPoint(camera.target.x, camera.target.y, camera.target.z);
     vtk->SetViewUp(camera.up.x, camera.up.y, camera.up.z);
     vtk->SetViewAngle(camera.fov_y_deg);
+    vtk->SetParallelProjection(camera.is_orthographic());
+    vtk->SetParallelScale(camera.half_height);  // VTK's parallel scale is half the view's height
     vtk->SetClippingRange(camera.near, camera.far);
 }
 
