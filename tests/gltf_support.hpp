@@ -1,6 +1,8 @@
 #pragma once
 // A small glTF scene written by the tests: one quad mesh placed twice (a ground and a roof), two
 // cameras, a sun and a bulb (KHR_lights_punctual), its buffer embedded as base64.
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -80,9 +82,13 @@ inline nlohmann::json two_camera_scene() {
     return gltf;
 }
 
-// Writes `text` to a fresh file of that name in the test's temporary directory.
+// Writes `text` to a fresh file of that name in this test process's own temporary directory (ctest
+// runs tests in parallel, each in a process of its own: a shared name would be written under another).
 inline std::string write_test_file(const std::string& name, const std::string& text) {
-    const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / name;
+    const std::filesystem::path dir =
+        std::filesystem::path(::testing::TempDir()) / ("shadowlab_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path path = dir / name;
     std::ofstream(path, std::ios::binary) << text;
     return path.string();
 }

@@ -193,3 +193,19 @@ TEST(OrthographicTown, SpotAndPointLightsAreJudgedAsUnderASun) {
         expect_same_maps(psm, run(method_or_throw("focused"), in), std::string("psm, ") + to_string(light));
     }
 }
+
+// The geometric techniques: planar shadows project casters onto the ground whatever the camera; the
+// stencil count rasterizes from an eye, which an orthographic camera lacks: the limit is named.
+TEST(OrthographicTown, PlanarShadowsWorkAndVolumesNameTheMissingEye) {
+    const MeasureContext context = prepare_measurement(orthographic_town(), kWidth, kHeight);
+    const Method& volumes = method_or_throw("volumes");
+    const GeometryResult counted = volumes.compute_geometry(context.scene, context.triangles, context.reference,
+                                                            resolve_settings("volumes", volumes.settings, {}), nullptr);
+    EXPECT_TRUE(has_note(counted.limits, NoteKind::no_eye_point)) << describe(counted.limits);
+    EXPECT_EQ(counted.shadowed.size(), context.reference.visible.size());
+    const Method& planar = method_or_throw("planar");
+    const GeometryResult projected = planar.compute_geometry(context.scene, context.triangles, context.reference,
+                                                             resolve_settings("planar", planar.settings, {}), nullptr);
+    ASSERT_EQ(projected.shadowed.size(), context.reference.visible.size());
+    EXPECT_GT(std::count(projected.shadowed.begin(), projected.shadowed.end(), 1), 0) << "no shadow on the ground";
+}

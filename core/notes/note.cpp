@@ -46,6 +46,9 @@ const std::vector<NoteInfo>& all_note_kinds() {
          "PCSS's search reached its texel limit: blockers farther across the light are missed"},
         {open_mesh, L, "open or non-manifold mesh", "two-sided volumes, silhouette edges with multiplicity"},
         {eye_in_volume, L, "eye inside a shadow volume", "z-pass counts are wrong there; z-fail holds"},
+        {no_eye_point, L, "no eye point",
+         "the stencil count rasterizes the volumes from the camera's eye, which an orthographic camera lacks: "
+         "nothing is counted and every pixel is lit; a map method or planar shadows serve this camera"},
         {not_planar_receiver, L, "only planar receivers", "planar shadows fall on planes only"},
         {below_plane, L, "casters below the plane", "they throw false shadows onto it"},
         {beyond_light, L, "casters beyond the light", "clipped at w = 0, else they throw anti-shadows"},

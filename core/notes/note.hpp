@@ -40,6 +40,7 @@ enum class NoteKind {
     // Limits of the geometric techniques (shadow volumes, planar projection).
     open_mesh,
     eye_in_volume,
+    no_eye_point,
     not_planar_receiver,
     below_plane,
     beyond_light,

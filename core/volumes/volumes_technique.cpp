@@ -14,8 +14,9 @@
 namespace shadowlab {
 
 SettingSpec volumes_count_setting() {
-    return {"count", "where faces are counted: zpass (eye to visible point), zfail (visible point to infinity)", "zfail",
-            0.0, 0.0, {"zpass", "zfail"}};
+    return {"count", "where faces are counted: zpass (eye to visible point), zfail (visible point to infinity)",
+            "zfail", 0.0,
+            0.0,     {"zpass", "zfail"}};
 }
 
 namespace {
@@ -113,20 +114,23 @@ void record_geometry(Trace* trace, const std::vector<ObjectTopology>& topology, 
         const SegmentSet edges = telling_edges(topology, open + non_manifold == 0);
         Aabb casters;
         for (const auto& [a, b] : edges.segments) casters.extend(a), casters.extend(b);
-        const glm::dvec3 above = casters.empty() ? scene.camera.target
-                                                 : glm::dvec3(casters.center().x, casters.max.y, casters.center().z);
+        const glm::dvec3 above =
+            casters.empty() ? scene.camera.target : glm::dvec3(casters.center().x, casters.max.y, casters.center().z);
         Step& topology_step =
             t.add("volumes.topology", "Edges of the casters",
                   "each edge should join one triangle running a -> b and one running b -> a (closed, consistently "
                   "oriented)",
                   Space::world)
-                .value("casting objects", double(topology.size())).value("closed objects", double(closed))
-                .value("open edges", double(open)).value("non-manifold edges", double(non_manifold))
-                .shape("edges label", Label{above, open + non_manifold == 0
-                                                       ? "closed: " + std::to_string(closed) + " objects"
-                                                       : std::to_string(open) + " open, " + std::to_string(non_manifold) +
-                                                             " non-manifold edges"},
-                       Role::casters);
+                .value("casting objects", double(topology.size()))
+                .value("closed objects", double(closed))
+                .value("open edges", double(open))
+                .value("non-manifold edges", double(non_manifold))
+                .shape(
+                    "edges label",
+                    Label{above, open + non_manifold == 0 ? "closed: " + std::to_string(closed) + " objects"
+                                                          : std::to_string(open) + " open, " +
+                                                                std::to_string(non_manifold) + " non-manifold edges"},
+                    Role::casters);
         if (!edges.segments.empty()) topology_step.shape("edges", edges, Role::casters);
         Step& facing = t.add("volumes.light-facing", "Light-facing triangles",
                              "n . L > 0 with L the light as a homogeneous point", Space::world)
@@ -143,9 +147,12 @@ void record_geometry(Trace* trace, const std::vector<ObjectTopology>& topology, 
                               "edges between a light-facing and a back-facing triangle; multiplicity = sum of +-1 over "
                               "casting triangles",
                               Space::world)
-                            .value("edges", double(s.edges.size())).value("total multiplicity", multiplicity);
-        if (silhouette.segments.empty()) outline.shape("silhouette label", Label{above, "no silhouette edge"});
-        else outline.shape("silhouette", std::move(silhouette), Role::casters);
+                            .value("edges", double(s.edges.size()))
+                            .value("total multiplicity", multiplicity);
+        if (silhouette.segments.empty())
+            outline.shape("silhouette label", Label{above, "no silhouette edge"});
+        else
+            outline.shape("silhouette", std::move(silhouette), Role::casters);
         Step& extrusion = t.add("volumes.extrusion", "Extruded quads",
                                 "edge a -> b gives (b, a, a - L, b - L) with w = 0: to infinity", Space::world)
                               .value("quads", double(v.quads.size()));
@@ -168,7 +175,8 @@ void record_geometry(Trace* trace, const std::vector<ObjectTopology>& topology, 
         const Camera& camera = scene.camera;
         t.add("volumes.projection", "Infinite far plane", "P_inf: P with far -> infinity; w = 0 points land at depth 1",
               Space::view)
-            .value("view", camera.view_matrix()).value("projection", camera.infinite_projection_matrix())
+            .value("view", camera.view_matrix())
+            .value("projection", camera.infinite_projection_matrix())
             .shape("frustum to infinity", infinite_frustum(camera), Role::view)
             .shape("far plane label", Label{{0.0, 0.0, -camera.far}, "far plane at infinity"}, Role::view);
     });
@@ -182,28 +190,41 @@ void record_count(Trace* trace, const StencilCounts& c, const ReferenceImage& im
         int largest = 0;
         for (std::size_t i = 0; i < c.zpass.size(); ++i)
             largest = std::max({largest, std::abs(c.zpass[i]), std::abs(c.zfail[i])});
-        Step& step = t.add("volumes.count", "Per-pixel count",
-              rule == CountRule::zfail ? "z-fail: behind the visible point, +1 back-facing, -1 front-facing; != 0 shadowed"
-                                       : "z-pass: in front of the visible point, +1 front-facing, -1 back-facing; != 0 shadowed",
-              Space::view)
-            .value("rule", std::string(rule == CountRule::zfail ? "zfail" : "zpass"))
-            .value("image", glm::dvec2(image.width, image.height))
-            .value("shadowed pixels", double(shadowed))
-            .value("pixels where the eye is inside a volume", double(eye_inside_pixels(c, image)))
-            .value("largest count", double(largest))
-            .value("fill mean", cost.fill_mean).value("fill max", cost.fill_max);
+        Step& step =
+            t.add("volumes.count", "Per-pixel count",
+                  rule == CountRule::zfail
+                      ? "z-fail: behind the visible point, +1 back-facing, -1 front-facing; != 0 shadowed"
+                      : "z-pass: in front of the visible point, +1 front-facing, -1 back-facing; != 0 shadowed",
+                  Space::view)
+                .value("rule", std::string(rule == CountRule::zfail ? "zfail" : "zpass"))
+                .value("image", glm::dvec2(image.width, image.height))
+                .value("shadowed pixels", double(shadowed))
+                .value("pixels where the eye is inside a volume", double(eye_inside_pixels(c, image)))
+                .value("largest count", double(largest))
+                .value("fill mean", cost.fill_mean)
+                .value("fill max", cost.fill_max);
         draw_shadowed_points(step, result.shadowed, image, camera);
     });
+}
+
+// An orthographic camera has no eye to rasterize the volumes from: nothing counted, every pixel lit,
+// and the limit named.
+GeometryResult without_an_eye(const ReferenceImage& image) {
+    GeometryResult r;
+    const std::size_t pixels = image.visible.size();
+    r.shadowed.assign(pixels, 0);
+    r.counts = StencilCounts{std::vector<int>(pixels, 0), std::vector<int>(pixels, 0), std::vector<int>(pixels, 0)};
+    r.rule = StencilRule::zfail;
+    r.limits = {Note{NoteKind::no_eye_point, "orthographic camera: no shadow volume is counted"}};
+    return r;
 }
 
 }  // namespace
 
 GeometryResult compute_volumes(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
-                                const Settings& settings, Trace* trace) {
+                               const Settings& settings, Trace* trace) {
     // The stencil pass rasterizes the volumes from an eye point (raster/polygon_spans.hpp).
-    if (scene.camera.is_orthographic())
-        throw std::invalid_argument("volumes: an orthographic camera is not supported (the stencil pass "
-                                    "rasterizes from an eye point); use a map method or planar");
+    if (scene.camera.is_orthographic()) return without_an_eye(image);
     const CountRule rule = settings.choice("count") == "zpass" ? CountRule::zpass : CountRule::zfail;
     GeometryResult r;
     const Stopwatch setup;
@@ -227,8 +248,8 @@ GeometryResult compute_volumes(const Scene& scene, const WorldTriangles& triangl
     std::vector<Note> limits = open_mesh_limits(topology);
     if (const std::size_t wrong = eye_inside_pixels(counts, image); rule == CountRule::zpass && wrong > 0)
         limits.push_back(Note{NoteKind::eye_in_volume,
-                                         "z-pass counts are off at " + std::to_string(wrong) +
-                                             " pixels (the eye or the near plane is in a volume); count=zfail is right"});
+                              "z-pass counts are off at " + std::to_string(wrong) +
+                                  " pixels (the eye or the near plane is in a volume); count=zfail is right"});
     r.limits = std::move(limits);
     r.counts = std::move(counts);
     return r;
