@@ -52,9 +52,10 @@ void look_orthographic(vtkRenderer* renderer, const Aabb& framed, const glm::dve
 // The World view from behind, above and beside the scene camera; the light spaces from the
 // light's side (their +z runs with the light), slightly tilted to show depth.
 void look_oblique(vtkRenderer* renderer, const Aabb& framed, ViewKind view, const SpaceFrame& frame) {
-    glm::dvec3 direction = view == ViewKind::world
-                               ? frame.view + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * glm::normalize(glm::cross(frame.view, glm::dvec3(0, 1, 0)))
-                               : glm::dvec3(0.25, 0.35, 1.0);
+    // The camera's right: across its view and its image's up (an axis when it looks straight down).
+    const glm::dvec3 right = glm::cross(frame.view, perpendicular(frame.view, glm::dvec3(0.0, 1.0, 0.0)));
+    glm::dvec3 direction = view == ViewKind::world ? frame.view + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * right
+                                                   : glm::dvec3(0.25, 0.35, 1.0);
     direction = glm::normalize(direction);
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->ParallelProjectionOff();
