@@ -1,5 +1,7 @@
 #include "scene/assimp_reader.hpp"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -112,7 +114,9 @@ void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& wor
 }
 
 // Every node with its world transform, depth first, a parent before its children, each node once
-// (a file whose tree loops back is read as a tree).
+// (a file whose tree loops back is read as a tree). A child Assimp left missing (its RAW reader
+// allocates a child per mesh and fills fewer) is passed over; the meshes no node reached then
+// follow as one more node, unplaced.
 std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
     struct Pending {
         const aiNode* node;
@@ -120,7 +124,12 @@ std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
     };
     std::vector<Pending> stack{{scene.mRootNode, aiMatrix4x4()}};
     std::unordered_set<const aiNode*> seen;
+    std::vector<bool> mesh_placed(scene.mNumMeshes, false);
+    bool child_missing = false;
     std::vector<NodeMesh> nodes;
+    const auto keep = [&](NodeMesh&& placed) {
+        if (!placed.mesh.triangles.empty() || placed.mesh.broken_faces_dropped > 0) nodes.push_back(std::move(placed));
+    };
     while (!stack.empty()) {
         const Pending pending = stack.back();
         stack.pop_back();
@@ -132,13 +141,23 @@ std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
         if (node.mNumMeshes > 0 && !node.mMeshes) throw Malformed{"node \"" + name + "\" has no mesh list"};
         if (node.mNumChildren > 0 && !node.mChildren) throw Malformed{"node \"" + name + "\" has no child list"};
         NodeMesh placed{.node_name = name, .mesh = {}};
-        for (unsigned i = 0; i < node.mNumMeshes; ++i)
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
             append_mesh(checked_mesh(scene, node.mMeshes[i]), node.mMeshes[i], world_from_node, corners, placed.mesh);
-        if (!placed.mesh.triangles.empty() || placed.mesh.broken_faces_dropped > 0) nodes.push_back(std::move(placed));
-        for (unsigned i = node.mNumChildren; i-- > 0;) {  // pushed last first: visited in the file's order
-            if (!node.mChildren[i]) throw Malformed{"node \"" + name + "\" has a missing child"};
-            stack.push_back({node.mChildren[i], world_from_node});
+            mesh_placed[node.mMeshes[i]] = true;
         }
+        keep(std::move(placed));
+        for (unsigned i = node.mNumChildren; i-- > 0;) {  // pushed last first: visited in the file's order
+            if (node.mChildren[i])
+                stack.push_back({node.mChildren[i], world_from_node});
+            else
+                child_missing = true;
+        }
+    }
+    if (child_missing) {
+        NodeMesh unplaced{.node_name = "meshes without a node", .mesh = {}};
+        for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+            if (!mesh_placed[m]) append_mesh(checked_mesh(scene, m), m, aiMatrix4x4(), corners, unplaced.mesh);
+        keep(std::move(unplaced));
     }
     return nodes;
 }
@@ -154,6 +173,11 @@ std::string import_failure(const Assimp::Importer& importer, const aiScene* scen
 }  // namespace
 
 AssimpRead read_with_assimp(const std::string& path) {
+    // Every block malloc gives is zero-filled from here on (glibc fills a new block with the
+    // perturb byte ^ 0xFF): fields an Assimp reader leaves unset read as 0 and null, the same on
+    // every run, rather than as what the heap held before (a wild pointer). Only the child process
+    // that reads the file is affected.
+    mallopt(M_PERTURB, 0xFF);
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(path, 0);  // no post-processing: see the header
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mNumMeshes == 0)

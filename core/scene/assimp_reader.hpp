@@ -6,7 +6,8 @@
 // of the structure Assimp returns is checked before it is followed; a face naming a vertex its mesh
 // lacks is left out and counted. Quake 3 levels (.bsp, or packed in a .pk3) are read as Assimp's
 // reader writes them: each face's corners are its three consecutive vertices, its index array
-// unset. Assimp itself can still crash
+// unset. A child node Assimp left missing is passed over and the meshes no node placed are read
+// unplaced. Fields a reader leaves unset read as zero (the child zero-fills the heap). Assimp itself can still crash
 // or hang on a file: call this only inside a child process (child_process; triangle_mesh does).
 #include <string>
 #include <vector>
