@@ -85,6 +85,26 @@ TEST(Corpus, IsInstalled) {
     EXPECT_EQ(model_files(SHADOWLAB_LEVELS).size(), 3u) << SHADOWLAB_LEVELS << " (openarena-081-maps) is missing";
 }
 
+// One model of each common format loads, with triangles: a refusal of every file (an importer that
+// always fails would pass the folders' test) fails here.
+TEST(Corpus, OneModelOfEachCommonFormatLoads) {
+    const std::string corpus = SHADOWLAB_ASSIMP_CORPUS;
+    const std::vector<std::string> models = {
+        corpus + "/OBJ/WusonOBJ.obj",     corpus + "/PLY/Wuson.ply",
+        corpus + "/STL/Spider_ascii.stl", corpus + "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+        corpus + "/FBX/box.fbx",          corpus + "/BLEND/box.blend",
+        corpus + "/3DS/fels.3ds",         corpus + "/3DS/testFormatDetection",
+        corpus + "/Collada/duck.dae",     corpus + "/X/test.x",
+        corpus + "/RAW/WithColor.raw",    std::string(SHADOWLAB_LEVELS) + "/oa_dm4.pk3"};
+    for (const std::string& model : models) {
+        const Scene scene = load_scene(model);
+        std::size_t triangles = 0;
+        for (const SceneObject& object : scene.objects)
+            if (object.mesh) triangles += object.mesh->triangles.size();
+        EXPECT_GT(triangles, 0u) << model;
+    }
+}
+
 class CorpusFolder : public ::testing::TestWithParam<fs::path> {};
 
 TEST_P(CorpusFolder, EveryFileLoadsWithFiniteMapsOrIsRefusedWithAReason) {
