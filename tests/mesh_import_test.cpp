@@ -184,6 +184,20 @@ TEST(MeshImport, PolygonsAndSharedCornersAreReadInOurCode) {
     EXPECT_EQ(mesh.vertices.size(), 8u);  // 24 corners in the file, 8 positions
 }
 
+TEST(MeshImport, AFaceNamingAMissingVertexIsLeftOutAndSaid) {
+    const std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 9\n";
+    const fs::path file = write_temp("missing_vertex.ply", ply);
+    const TriangleMesh mesh = load_triangle_mesh(file.string(), "", "file");
+    EXPECT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.broken_faces_dropped, 1u);
+    const std::vector<std::string> notes = loading_notes(load_scene(file.string()));
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0], file.string() + ": 1 faces name a vertex their mesh lacks (as Assimp reads them): left out");
+}
+
 // ---- formats by content, and messages --------------------------------------------------------
 
 TEST(SceneFormats, AModelWithoutAnExtensionIsReadByItsContent) {

@@ -20,4 +20,8 @@ struct Scene {
     Aabb bounds() const;  // union of the objects' world bounds
 };
 
+// What loading left out of the scene's mesh files, one line per file (broken_faces_note), in the
+// order the objects name them: for the window's messages.
+std::vector<std::string> loading_notes(const Scene& scene);
+
 }  // namespace shadowlab

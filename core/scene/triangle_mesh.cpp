@@ -91,13 +91,16 @@ std::vector<NodeMesh> read_nodes(const std::filesystem::path& path, const MeshFi
     if (!child.bytes.starts_with('N') || !nodes) problem.refuse_unread("the importer's answer is garbled");
     std::size_t broken = 0;
     for (const NodeMesh& node : *nodes) broken += node.mesh.broken_faces_dropped;
-    if (broken > 0)
-        std::clog << path.string() << ": " << broken
-                  << " faces name a vertex their mesh lacks (as Assimp reads them): left out\n";
+    if (broken > 0) std::clog << broken_faces_note(path.string(), broken) << "\n";
     return std::move(*nodes);
 }
 
 }  // namespace
+
+std::string broken_faces_note(const std::string& file, std::size_t broken_faces) {
+    if (broken_faces == 0) return "";
+    return file + ": " + std::to_string(broken_faces) + " faces name a vertex their mesh lacks (as Assimp reads them): left out";
+}
 
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path) {
     const std::filesystem::path path = resolve(file, scene_file);

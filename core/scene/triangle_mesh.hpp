@@ -31,6 +31,11 @@ struct TriangleMesh {
 // levels) are left out, counted, and said on stderr.
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path);
 
+// What was left out of a file's meshes, for the user: "FILE: 3 faces name a vertex their mesh lacks
+// (as Assimp reads them): left out"; empty when nothing was. Loading says it on stderr; the window
+// shows it among its messages.
+std::string broken_faces_note(const std::string& file, std::size_t broken_faces);
+
 // The meshes one node of a file holds, together, placed in the file's world by the node's transform
 // and its parents' (a glTF scene's objects, one per node).
 struct NodeMesh {

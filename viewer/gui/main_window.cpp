@@ -204,6 +204,7 @@ void MainWindow::build_menus() {
 bool MainWindow::open_file(const QString& path) {
     try {
         Scene loaded = load_scene(path.toStdString());  // JSON, glTF (its own camera and light) or a lone mesh
+        for (const std::string& note : loading_notes(loaded)) message(QString::fromStdString(note), false);
         std::optional<GltfSource> gltf;
         if (std::optional<GltfReference> reference =
                 gltf_reference_of(QFileInfo(path).absoluteFilePath().toStdString()))
