@@ -195,7 +195,7 @@ TEST(MeshImport, AFaceNamingAMissingVertexIsLeftOutAndSaid) {
     EXPECT_EQ(mesh.broken_faces_dropped, 1u);
     const std::vector<std::string> notes = loading_notes(load_scene(file.string()));
     ASSERT_EQ(notes.size(), 1u);
-    EXPECT_EQ(notes[0], file.string() + ": 1 faces name a vertex their mesh lacks (as Assimp reads them): left out");
+    EXPECT_EQ(notes[0], file.string() + ": 1 face names a vertex its mesh lacks (as Assimp reads them): left out");
 }
 
 // ---- formats by content, and messages --------------------------------------------------------

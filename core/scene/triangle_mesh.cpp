@@ -99,7 +99,10 @@ std::vector<NodeMesh> read_nodes(const std::filesystem::path& path, const MeshFi
 
 std::string broken_faces_note(const std::string& file, std::size_t broken_faces) {
     if (broken_faces == 0) return "";
-    return file + ": " + std::to_string(broken_faces) + " faces name a vertex their mesh lacks (as Assimp reads them): left out";
+    const std::string faces = broken_faces == 1
+                                  ? "1 face names a vertex its mesh lacks"
+                                  : std::to_string(broken_faces) + " faces name a vertex their mesh lacks";
+    return file + ": " + faces + " (as Assimp reads them): left out";
 }
 
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path) {

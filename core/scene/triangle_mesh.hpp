@@ -27,13 +27,13 @@ struct TriangleMesh {
 // a file it crashes or hangs on is refused like any other. Throws SceneError naming `json_path` and
 // saying why when the file is missing or unreadable (Assimp's reason; "the importer crashed (signal
 // 11, SIGSEGV)"; "the importer took over 60 s"), has a vertex that is not finite, or no triangle of
-// non-zero area. Faces naming a vertex beyond their mesh (Assimp reads a few so in some Quake 3
-// levels) are left out, counted, and said on stderr.
+// non-zero area. Faces naming a vertex beyond their mesh (as Assimp reads some PLY files) are left
+// out, counted, and said on stderr.
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path);
 
 // What was left out of a file's meshes, for the user: "FILE: 3 faces name a vertex their mesh lacks
-// (as Assimp reads them): left out"; empty when nothing was. Loading says it on stderr; the window
-// shows it among its messages.
+// (as Assimp reads them): left out" ("1 face names a vertex its mesh lacks"); empty when nothing
+// was. Loading says it on stderr; the window shows it among its messages.
 std::string broken_faces_note(const std::string& file, std::size_t broken_faces);
 
 // The meshes one node of a file holds, together, placed in the file's world by the node's transform
