@@ -73,7 +73,8 @@ std::vector<double> split_depths(const Settings& s, const DepthRange& bounds, in
     if (s.choice("scheme") == "practical") return practical_splits(bounds.near, bounds.far, count, s.number("lambda"));
     const std::vector<double> fractions = s.numbers("splits");
     if (int(fractions.size()) != count - 1)
-        refuse("splits", s.choice("splits"), std::to_string(count - 1) + " fractions needed for count=" + std::to_string(count));
+        refuse("splits", s.choice("splits"),
+               std::to_string(count - 1) + " fractions needed for count=" + std::to_string(count));
     for (size_t i = 0; i < fractions.size(); ++i)
         if (!(fractions[i] > (i == 0 ? 0.0 : fractions[i - 1]) && fractions[i] < 1.0))
             refuse("splits", s.choice("splits"), "fractions of the depth range must increase within (0, 1)");
@@ -240,7 +241,9 @@ void record_splits(Trace& t, const ShadowInputs& in, const Settings& s, const Ca
                        practical ? "C_i = λ n (f/n)^(i/m) + (1 - λ)(n + (f - n) i/m): λ = 1 logarithmic, 0 uniform"
                                  : "C_i = n + fraction_i (f - n)",
                        Space::world)
-                     .value("n", o.depths.front()).value("f", o.depths.back()).value("m", double(o.count));
+                     .value("n", o.depths.front())
+                     .value("f", o.depths.back())
+                     .value("m", double(o.count));
     if (practical) step.value("lambda", s.number("lambda"));
     step.shape("F", depth_slice(in.camera, o.depths.front(), o.depths.back()), Role::view);
     for (size_t i = 1; i + 1 < o.depths.size(); ++i) {
@@ -259,7 +262,9 @@ void record_cascade(Trace& t, const glm::dmat4& light_from_world, const Cascade&
                         "the view frustum between depths " + label_number(c.near) + " and " + label_number(c.far) +
                             "; its body: what can shadow the slice's part of the scene",
                         Space::world)
-                      .value("near", c.near).value("far", c.far).value("body_volume", c.part.body.volume())
+                      .value("near", c.near)
+                      .value("far", c.far)
+                      .value("body_volume", c.part.body.volume())
                       .map_shape(i, "slice " + k, c.slice, Role::view)
                       .map_shape(i, name + " label", Label{c.slice.corners[7], name});
     if (!c.part.body.empty()) slice.shape("B_" + k, c.part.body, Role::focus);
@@ -268,19 +273,23 @@ void record_cascade(Trace& t, const glm::dmat4& light_from_world, const Cascade&
         Step& warp = t.add(id + "-warp", "Cascade " + k + ": LiSPSM warp",
                            "LiSPSM inside the slice: n = (z_n + sqrt(z_n z_f)) / sin γ with z_n = the slice's near",
                            Space::light)
-                         .value("z_n", c.near).value("n", c.warp->n).value("P", c.warp->ppls_from_light)
+                         .value("z_n", c.near)
+                         .value("n", c.warp->n)
+                         .value("P", c.warp->ppls_from_light)
                          .shape("B_" + k, PointSet{transformed(c.ws_cover, light_from_world)}, Role::focus);
         draw_warp_frustum(warp, *c.warp);
     } else {
         const Aabb& box = c.snapped ? c.snapped->box : c.ls_fit;
-        Step& fit = t.add(id + "-fit", "Cascade " + k + ": light box",
-                          c.sphere ? "x, y: the slice's bounding sphere, centre ± r (its size fixed as the camera turns)"
-                                   : "the light-space AABB of the slice's body",
-                          Space::light)
-                        .value("min", box.min).value("max", box.max)
-                        .shape("B_" + k, PointSet{transformed(c.ws_cover, light_from_world)}, Role::focus)
-                        .map_shape(i, "box " + k, box, Role::map)
-                        .map_shape(i, "box label", Label{box.max, name}, Role::map);
+        Step& fit =
+            t.add(id + "-fit", "Cascade " + k + ": light box",
+                  c.sphere ? "x, y: the slice's bounding sphere, centre ± r (its size fixed as the camera turns)"
+                           : "the light-space AABB of the slice's body",
+                  Space::light)
+                .value("min", box.min)
+                .value("max", box.max)
+                .shape("B_" + k, PointSet{transformed(c.ws_cover, light_from_world)}, Role::focus)
+                .map_shape(i, "box " + k, box, Role::map)
+                .map_shape(i, "box label", Label{box.max, name}, Role::map);
         if (c.sphere) {
             const glm::dvec3 ls_centre = transform_point(light_from_world, c.sphere->centre);
             std::vector<glm::dvec4> circle;
@@ -294,22 +303,25 @@ void record_cascade(Trace& t, const glm::dmat4& light_from_world, const Cascade&
             // The snap moves the box's corner by under one cell of extent / 256 onto the grid through the scene's
             // centre.
             const glm::dvec2 cell = glm::dvec2(c.snapped->box.extent()) / double(kSnapCells);
-            fit.value("snap_offset_cells", c.snapped->offset_cells).value("cell", cell)
+            fit.value("snap_offset_cells", c.snapped->offset_cells)
+                .value("cell", cell)
                 .shape("unsnapped", c.ls_fit)
-                .shape("snap label", Label{c.snapped->box.min, "snapped by (" + label_number(c.snapped->offset_cells.x) +
-                                                                   ", " + label_number(c.snapped->offset_cells.y) +
-                                                                   ") cells of 1/256 tile"});
+                .shape("snap label", Label{c.snapped->box.min,
+                                           "snapped by (" + label_number(c.snapped->offset_cells.x) + ", " +
+                                               label_number(c.snapped->offset_cells.y) + ") cells of 1/256 tile"});
         }
     }
 
     const glm::dvec4 vp = c.map.viewport;
-    Step& tile = t.add(id + "-tile", "Cascade " + k + ": its tile",
-                       "the tile matrix, NDC to texture (v down): x by s/2, y by -s/2, offset s/2 + s (column, row); s = " +
-                           label_number(c.tile.side),
-                       Space::unit)
-                     .value("tile_matrix", atlas_tile_matrix(c.tile)).value("viewport", vp)
-                     .map_shape(i, "tile " + k, Aabb{{vp.x, vp.y, 0.0}, {vp.z, vp.w, 1.0}})
-                     .map_shape(i, "tile label", Label{{vp.x, vp.w, 1.0}, "tile " + k});
+    Step& tile =
+        t.add(id + "-tile", "Cascade " + k + ": its tile",
+              "the tile matrix, NDC to texture (v down): x by s/2, y by -s/2, offset s/2 + s (column, row); s = " +
+                  label_number(c.tile.side),
+              Space::unit)
+            .value("tile_matrix", atlas_tile_matrix(c.tile))
+            .value("viewport", vp)
+            .map_shape(i, "tile " + k, Aabb{{vp.x, vp.y, 0.0}, {vp.z, vp.w, 1.0}})
+            .map_shape(i, "tile label", Label{{vp.x, vp.w, 1.0}, "tile " + k});
     draw_unit_cube(tile);
 }
 
@@ -320,7 +332,8 @@ void record_selection(Trace& t, const ShadowInputs& in, const CascadeOptions& o,
         for (size_t i = 0; i < setup.maps.size(); ++i) {
             const Frustum volume = map_volume(setup.maps[i]);
             const std::string name = "map " + std::to_string(i + 1);
-            step.map_shape(int(i), name, volume, Role::map).map_shape(int(i), name + " label", Label{volume.corners[6], name});
+            step.map_shape(int(i), name, volume, Role::map)
+                .map_shape(int(i), name + " label", Label{volume.corners[6], name});
         }
         return;
     }
@@ -333,8 +346,9 @@ void record_selection(Trace& t, const ShadowInputs& in, const CascadeOptions& o,
         const std::vector<glm::dvec4> face = depth_face(in.camera, o.depths[i]);
         const std::string name = "cascade " + std::to_string(i + 1);
         step.map_shape(int(i), name + " from", PolygonSet{}.add(face))
-            .map_shape(int(i), name + " label", Label{glm::dvec3(face[2]), name + ": [" + label_number(o.depths[i]) + ", " +
-                                                                               label_number(o.depths[i + 1]) + ")"});
+            .map_shape(int(i), name + " label",
+                       Label{glm::dvec3(face[2]),
+                             name + ": [" + label_number(o.depths[i]) + ", " + label_number(o.depths[i + 1]) + ")"});
         if (i > 0 && o.blend > 0.0) {
             const double band_start = o.depths[i] - o.blend * (o.depths[i] - o.depths[i - 1]);
             step.shape(name + " blend", PolygonSet{}.add(depth_face(in.camera, band_start)), Role::map);
@@ -362,14 +376,16 @@ ShadowSetup compute_cascades(const ShadowInputs& in, const Settings& s, Trace* t
     for (int i = 0; i < o.count; ++i) {
         cascades.push_back(build_cascade(in, o, kernel, light_from_world, i));
         if (o.lispsm && !cascades.back().warp)
-            add_fallback(setup, Note{NoteKind::parallel_light, "cascade " + std::to_string(i + 1) +
-                                                                   ": the warp has faded to nothing; its box fit used"});
+            add_fallback(
+                setup, Note{NoteKind::parallel_light,
+                            "cascade " + std::to_string(i + 1) + ": the warp has faded to nothing; its box fit used"});
         setup.maps.push_back(cascades.back().map);
     }
     setup.selection = selection_of(in, o);
     record(trace, [&](Trace& t) {
         t.set_frame(Space::light, light_from_world);
-        if (const auto& warp = cascades.front().warp) t.set_frame(Space::ppls, warp->ppls_from_light * light_from_world);
+        if (const auto& warp = cascades.front().warp)
+            t.set_frame(Space::ppls, warp->ppls_from_light * light_from_world);
         if (o.visible_bounds) record_visible_bounds(t, in, o);
         record_splits(t, in, s, o);
         for (int i = 0; i < o.count; ++i) record_cascade(t, light_from_world, cascades[i], i);

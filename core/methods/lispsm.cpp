@@ -206,10 +206,13 @@ LispsmWarp lispsm_warp(const LispsmRequest& req) {
 
 void draw_warp_frustum(Step& step, const LispsmWarp& w) {
     const Frustum warp_frustum = preimage_of_box(w.ppls_from_light, w.ppls_box, 1);
-    step.shape("P", warp_frustum).shape("near and far planes", near_and_far_faces(warp_frustum))
-        .shape("C", PointSet{{w.ls_centre}}).shape("C label", Label{w.ls_centre, "C"})
+    step.shape("P", warp_frustum)
+        .shape("near and far planes", near_and_far_faces(warp_frustum))
+        .shape("C", PointSet{{w.ls_centre}})
+        .shape("C label", Label{w.ls_centre, "C"})
         .shape("near label", Label{w.ls_near_face, "near n = " + label_number(w.n)})
-        .shape("far label", Label{w.ls_near_face + glm::dvec3(0, w.depth, 0), "far n + depth = " + label_number(w.n + w.depth)});
+        .shape("far label",
+               Label{w.ls_near_face + glm::dvec3(0, w.depth, 0), "far n + depth = " + label_number(w.n + w.depth)});
 }
 
 namespace {
@@ -268,7 +271,8 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
         t.add("light-space", "Light space", "z = light direction, y = view direction made perpendicular to it",
               Space::light)
             .value("world_to_light", w.light_from_world)
-            .shape("B", PointSet{w.ls_body}, Role::focus).shape("B box", w.ls_body_box, Role::focus);
+            .shape("B", PointSet{w.ls_body}, Role::focus)
+            .shape("B box", w.ls_body_box, Role::focus);
         t.set_frame(Space::light, w.light_from_world * space.from_world);
         // γ is the angle between the view direction V and the light direction L (+z in light space).
         const glm::dvec3 ls_view = glm::dmat3(w.light_from_world) * space.view_direction, ls_light{0, 0, 1};
@@ -325,16 +329,19 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
     record(trace, [&](Trace& t) {
         Step& frustum = t.add("warp-frustum", "Warp frustum",
                               "centre C = (eye x, near face of B - n, eye z), near n, far n + depth(B)", Space::light)
-                            .value("C", w.ls_centre).value("near", w.n).value("far", w.n + w.depth);
+                            .value("C", w.ls_centre)
+                            .value("near", w.n)
+                            .value("far", w.n + w.depth);
         draw_warp_frustum(frustum, w);
         t.add("warp", "Perspective warp P", "x' = x/y, y' = f(y - n)/((f - n) y), z' = z/y about C", Space::ppls)
             .value("P", w.ppls_from_light)
-            .shape("warped B", PointSet{w.ppls_body.points}, Role::focus).shape("warped box", w.ppls_box, Role::map);
+            .shape("warped B", PointSet{w.ppls_body.points}, Role::focus)
+            .shape("warped box", w.ppls_box, Role::map);
         t.set_frame(Space::ppls, w.ppls_from_light * w.light_from_world * space.from_world);
-        Step& unit = t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min) over the warped body",
-                           Space::unit)
-                         .value("warped_to_unit", w.uvz_from_ppls)
-                         .shape("warped B", PointSet{transformed(w.ppls_body.points, w.uvz_from_ppls)}, Role::focus);
+        Step& unit =
+            t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min) over the warped body", Space::unit)
+                .value("warped_to_unit", w.uvz_from_ppls)
+                .shape("warped B", PointSet{transformed(w.ppls_body.points, w.uvz_from_ppls)}, Role::focus);
         draw_unit_cube(unit);
     });
     record_output(setup, region->ws_points, trace);
@@ -347,10 +354,16 @@ std::vector<SettingSpec> lispsm_settings() {
             {"near_hint",
              "virtual near plane: the eye's range starts this fraction of the way from the nearest to the farthest "
              "receiver seen (0: at the nearest)",
-             "0", 0.0, 0.66, {}},
+             "0",
+             0.0,
+             0.66,
+             {}},
             {"depths",
              "the receivers' view depths: of their boxes within the visible region, or of the camera's depth image",
-             "boxes", 0.0, 0.0, {"boxes", "image"}},
+             "boxes",
+             0.0,
+             0.0,
+             {"boxes", "image"}},
             body_kernel_setting()};
 }
 

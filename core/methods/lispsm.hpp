@@ -13,7 +13,6 @@ std::vector<SettingSpec> lispsm_settings();
 // depths = image: the eye's range is read off the camera's depth image (ShadowInputs::visible_depths).
 bool lispsm_reads_visible_depths(const Settings& settings);
 
-
 // The warp frustum's near distance n for the eye range [z_n, z_f] and angle γ between view and
 // light, with Lloyd's η: the warp's far/near ratio is (z_f / z_n)^((1 + η) / 2), so η = -1 gives
 // no warp (n = ∞), η = 0 LiSPSM's n_opt = (z_n + sqrt(z_n z_f)) / sin γ, η = 1 PSM's n = z_n / sin γ.

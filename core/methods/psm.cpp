@@ -84,9 +84,7 @@ PerspectiveFit reaching_past_far(const PerspectiveFit& fit, const Light& pps_lig
 
 }  // namespace
 
-std::vector<SettingSpec> psm_settings() {
-    return {body_kernel_setting()};
-}
+std::vector<SettingSpec> psm_settings() { return {body_kernel_setting()}; }
 
 ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace) {
     ShadowSetup setup;
@@ -106,7 +104,9 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
                             "eye moved back by δ along the view so every caster is in front; near and far pulled to "
                             "the points",
                             Space::world)
-                          .value("slide", camera.slide).value("eye", camera.eye).value("near", camera.near)
+                          .value("slide", camera.slide)
+                          .value("eye", camera.eye)
+                          .value("near", camera.near)
                           .value("far", camera.far)
                           .shape("virtual frustum", preimage_of_box(camera.pps_from_world, pps_cube), Role::view)
                           .shape("B", PointSet{ws_body}, Role::focus)
@@ -116,10 +116,11 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
                            camera.eye, in.camera.position);
         else
             slide.shape("δ label", Label{in.camera.position, "δ = 0: every point already in front of the eye"});
-        t.add("psm-pps", "Post-perspective space", "p' = (P V p) / w of the virtual camera: the view frustum becomes a cube",
-              Space::ppls)
+        t.add("psm-pps", "Post-perspective space",
+              "p' = (P V p) / w of the virtual camera: the view frustum becomes a cube", Space::ppls)
             .value("view_projection", camera.pps_from_world)
-            .shape("PPS body", PointSet{pps_body.points}, Role::focus).shape("unit cube", pps_cube, Role::view)
+            .shape("PPS body", PointSet{pps_body.points}, Role::focus)
+            .shape("unit cube", pps_cube, Role::view)
             .shape("unit cube label", Label{{-1.0, 1.0, -1.0}, "view frustum → [-1,1]³"}, Role::view);
         t.set_frame(Space::view, glm::lookAt(camera.eye, camera.eye + in.camera.view_direction(), in.camera.up));
         t.set_frame(Space::ppls, camera.pps_from_world);
@@ -136,8 +137,8 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
         } else {
             const glm::dvec3 pps_position = glm::dvec3(pps_light) / pps_light.w;
             light.shape("L'", PointSet{{pps_position}}, Role::light)
-                .shape("L' label", Label{pps_position, pps_light.w > 0.0 ? "L': a point light"
-                                                                          : "L': behind the viewer (w < 0)"},
+                .shape("L' label",
+                       Label{pps_position, pps_light.w > 0.0 ? "L': a point light" : "L': behind the viewer (w < 0)"},
                        Role::light)
                 .shape("L' to B", SegmentSet{{{pps_position, pps_centre}}}, Role::light);
         }
@@ -151,8 +152,9 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
                               "light perpendicular to the view: it stays directional in PPS, fitted like a focused map",
                               Space::ppls)
                             .value("L_pps_direction", -glm::dvec3(pps_light))
-                            .shape("map volume", preimage_of_box(map.world_to_uvz * glm::inverse(camera.pps_from_world),
-                                                                 Aabb{glm::dvec3(0.0), glm::dvec3(1.0)}),
+                            .shape("map volume",
+                                   preimage_of_box(map.world_to_uvz * glm::inverse(camera.pps_from_world),
+                                                   Aabb{glm::dvec3(0.0), glm::dvec3(1.0)}),
                                    Role::map);
             draw_arrow(fit, "L'", bounds_of(pps_body.points).center(), -glm::dvec3(pps_light), 1.0, Role::light);
             const glm::dmat4 light_from_pps =
@@ -197,8 +199,10 @@ ShadowSetup compute_psm(const ShadowInputs& in, const Settings& s, Trace* trace)
                   inverted ? "light behind the viewer: rays converge on the PPS light, depth reversed (d' = 1 - d)"
                            : "perspective from the PPS light covering the body",
                   Space::ppls)
-                .value("light_position", pps_point_light.position).value("pps_to_light", light_from_pps)
-                .value("near", fit.light_box.min.z).value("far", fit.light_box.max.z)
+                .value("light_position", pps_point_light.position)
+                .value("pps_to_light", light_from_pps)
+                .value("near", fit.light_box.min.z)
+                .value("far", fit.light_box.max.z)
                 .value("inverted", inverted ? 1.0 : 0.0)
                 .shape("light frustum", light_frustum, Role::map)
                 .shape("near and far", near_and_far_faces(light_frustum), Role::map)

@@ -60,17 +60,19 @@ LightView light_view(const ShadowInputs& in, const IntersectionBody& body, Trace
     for (const glm::dvec3& p : ls.body) ls.points.emplace_back(p);
     record(trace, [&](Trace& t) {
         const glm::dvec3 ls_view = glm::dmat3(ls.light_from_world) * in.camera.view_direction();
-        Step& step = t.add("tsm-light-space", "Light's post-perspective space",
-              "directional light: light space with an orthographic fit (z along the light, y the view made "
-              "perpendicular to it, origin at the eye); where the paper projects the eye frustum's 8 corners, we "
-              "project the vertices of the eye frustum focused to the body B",
-              Space::light)
-            .value("world_to_light", ls.light_from_world)
-            .value("eye_xy", glm::dvec2(0.0))
-            .value("view_xy", glm::dvec2(ls_view))
-            .shape("B", PointSet{ls.body}, Role::focus).shape("B projected", PointSet{in_xy_plane(ls.points)})
-            .shape("eye", PointSet{{glm::dvec3(0.0)}}, Role::view)
-            .shape("eye label", Label{glm::dvec3(0.0), "eye"}, Role::view);
+        Step& step =
+            t.add("tsm-light-space", "Light's post-perspective space",
+                  "directional light: light space with an orthographic fit (z along the light, y the view made "
+                  "perpendicular to it, origin at the eye); where the paper projects the eye frustum's 8 corners, we "
+                  "project the vertices of the eye frustum focused to the body B",
+                  Space::light)
+                .value("world_to_light", ls.light_from_world)
+                .value("eye_xy", glm::dvec2(0.0))
+                .value("view_xy", glm::dvec2(ls_view))
+                .shape("B", PointSet{ls.body}, Role::focus)
+                .shape("B projected", PointSet{in_xy_plane(ls.points)})
+                .shape("eye", PointSet{{glm::dvec3(0.0)}}, Role::view)
+                .shape("eye label", Label{glm::dvec3(0.0), "eye"}, Role::view);
         draw_arrow(step, "V", glm::dvec3(0.0), ls_view, glm::length(glm::dvec2(bounds_of(ls.body).extent())) / 4,
                    Role::view);
         t.set_frame(Space::light, ls.light_from_world);
@@ -101,17 +103,22 @@ CentreLine centre_line(const ShadowInputs& in, const IntersectionBody& body, con
     l.axis = l.length > 0.0 ? (l.far_centre - l.near_centre) / l.length : glm::dvec2(0.0);
     l.extent = glm::length(glm::dvec2(bounds_of(ls.body).extent()));
     record(trace, [&](Trace& t) {
-        Step& step = t.add("tsm-centre-line", "Centre line l",
-              "from the near plane's centre to the far plane's centre, projected; near and far moved to touch the "
-              "receivers seen; "
-              "shorter than 5% of the points' extent: the light is parallel to the view",
-              Space::light)
-            .value("near", near).value("far", far)
-            .value("near_centre", l.near_centre).value("far_centre", l.far_centre)
-            .value("length", l.length).value("points_extent", l.extent).value("direction", l.axis)
-            .shape("centres", PointSet{in_xy_plane({l.near_centre, l.far_centre})})
-            .shape("near centre label", Label{{l.near_centre, 0.0}, "near centre"})
-            .shape("far centre label", Label{{l.far_centre, 0.0}, "far centre"});
+        Step& step =
+            t.add("tsm-centre-line", "Centre line l",
+                  "from the near plane's centre to the far plane's centre, projected; near and far moved to touch the "
+                  "receivers seen; "
+                  "shorter than 5% of the points' extent: the light is parallel to the view",
+                  Space::light)
+                .value("near", near)
+                .value("far", far)
+                .value("near_centre", l.near_centre)
+                .value("far_centre", l.far_centre)
+                .value("length", l.length)
+                .value("points_extent", l.extent)
+                .value("direction", l.axis)
+                .shape("centres", PointSet{in_xy_plane({l.near_centre, l.far_centre})})
+                .shape("near centre label", Label{{l.near_centre, 0.0}, "near centre"})
+                .shape("far centre label", Label{{l.far_centre, 0.0}, "far centre"});
         if (l.length > 0.0) step.shape("l", SegmentSet{{{{l.near_centre, 0.0}, {l.far_centre, 0.0}}}});
     });
     return l;
@@ -171,9 +178,13 @@ TopBase top_and_base(const std::vector<glm::dvec2>& hull, const CentreLine& l, T
         auto middle = [&](double at) { return glm::dvec3(l.near_centre + at * l.axis, 0.0); };
         t.add("tsm-top-base-lines", "Top line l_t and base line l_b",
               "perpendicular to l, touching the hull on the near and far side; λ is their distance", Space::light)
-            .value("top", lines.top).value("base", lines.base).value("lambda", lines.lambda())
-            .shape("l_t", line(lines.top)).shape("l_t label", Label{middle(lines.top), "l_t"})
-            .shape("l_b", line(lines.base)).shape("l_b label", Label{middle(lines.base), "l_b"})
+            .value("top", lines.top)
+            .value("base", lines.base)
+            .value("lambda", lines.lambda())
+            .shape("l_t", line(lines.top))
+            .shape("l_t label", Label{middle(lines.top), "l_t"})
+            .shape("l_b", line(lines.base))
+            .shape("l_b label", Label{middle(lines.base), "l_b"})
             .shape("λ", SegmentSet{{{middle(lines.top), middle(lines.base)}}})
             .shape("λ label", Label{middle(0.5 * (lines.top + lines.base)), "λ = " + label_number(lines.lambda())});
     });
@@ -199,10 +210,17 @@ Focus focus_80(const CentreLine& l, const TopBase& lines, double focus, Trace* t
               "p_L ends the focus region, `focus` of the way from the near to the far centre; δ' = its distance "
               "from l_t; η = (λδ' + λδ'ξ) / (λ - 2δ' - λξ), ξ = -0.6; q on l, η before l_t",
               Space::light)
-            .value("focus", focus).value("xi", kXi).value("p_L", f.p_l).value("delta_prime", f.delta_prime)
-            .value("lambda", lambda).value("eta", f.eta).value("q", f.q)
-            .shape("p_L", PointSet{in_xy_plane({f.p_l})}).shape("p_L label", Label{{f.p_l, 0.0}, "p_L"})
-            .shape("q", PointSet{in_xy_plane({f.q})}).shape("q label", Label{{f.q, 0.0}, "q"})
+            .value("focus", focus)
+            .value("xi", kXi)
+            .value("p_L", f.p_l)
+            .value("delta_prime", f.delta_prime)
+            .value("lambda", lambda)
+            .value("eta", f.eta)
+            .value("q", f.q)
+            .shape("p_L", PointSet{in_xy_plane({f.p_l})})
+            .shape("p_L label", Label{{f.p_l, 0.0}, "p_L"})
+            .shape("q", PointSet{in_xy_plane({f.q})})
+            .shape("q label", Label{{f.q, 0.0}, "q"})
             .shape("l", SegmentSet{{{{f.q, 0.0}, {f.p_l, 0.0}}}});
     });
     return f;
@@ -241,11 +259,15 @@ Trapezoid trapezoid_around(const std::vector<glm::dvec2>& hull, const CentreLine
               "the side lines through q touching the hull, cut by l_t and l_b; corners: top right, top left, "
               "base left, base right",
               Space::light)
-            .value("right_slope", z.right_slope).value("left_slope", z.left_slope)
-            .value("corner0", z.corners[0]).value("corner1", z.corners[1])
-            .value("corner2", z.corners[2]).value("corner3", z.corners[3])
+            .value("right_slope", z.right_slope)
+            .value("left_slope", z.left_slope)
+            .value("corner0", z.corners[0])
+            .value("corner1", z.corners[1])
+            .value("corner2", z.corners[2])
+            .value("corner3", z.corners[3])
             .shape("trapezoid", PolygonSet{}.add(polygon_of(in_xy_plane({z.corners.begin(), z.corners.end()}))))
-            .shape("q", PointSet{in_xy_plane({z.q})}).shape("q label", Label{{z.q, 0.0}, "q"});
+            .shape("q", PointSet{in_xy_plane({z.q})})
+            .shape("q label", Label{{z.q, 0.0}, "q"});
     });
     return z;
 }
@@ -288,7 +310,8 @@ glm::dmat4 trapezoid_to_square(const Trapezoid& z, const Focus& f, const std::ve
         step.shape("trapezoid on the square", PolygonSet{}.add(polygon_of(square)), Role::map)
             .shape("80% line", SegmentSet{{{{0.0, v80, 0.0}, {1.0, v80, 0.0}}}})
             .shape("80% label", Label{{1.0, v80, 0.0}, "80% line"})
-            .shape("p_L", PointSet{{on_square(f.p_l)}}).shape("p_L label", Label{on_square(f.p_l), "p_L"});
+            .shape("p_L", PointSet{{on_square(f.p_l)}})
+            .shape("p_L label", Label{on_square(f.p_l), "p_L"});
         draw_unit_cube(step);
     });
     return unit_from_light;
@@ -304,19 +327,18 @@ ShadowSetup compute_tsm(const ShadowInputs& in, const Settings& s, Trace* trace)
     const LightView ls = light_view(in, *body, trace);
     const CentreLine l = centre_line(in, *body, ls, trace);
     if (l.degenerate()) {
-        fall_back_to_focused(Note{NoteKind::degenerate_centre_line,
-                                             "|l| / points' extent = " + std::to_string(l.length / l.extent) +
-                                                 " < 0.05, the light is almost parallel to the view; focused map "
-                                                 "used"},
-                             in, *body, setup, trace);
+        fall_back_to_focused(
+            Note{NoteKind::degenerate_centre_line, "|l| / points' extent = " + std::to_string(l.length / l.extent) +
+                                                       " < 0.05, the light is almost parallel to the view; focused map "
+                                                       "used"},
+            in, *body, setup, trace);
         return setup;
     }
     const std::vector<glm::dvec2> hull = convex_hull(ls.points, trace);
     const TopBase lines = top_and_base(hull, l, trace);
     const Focus focus = focus_80(l, lines, s.number("focus"), trace);
     if (!(focus.eta > 0.0 && focus.eta < kNoWarp * lines.lambda())) {
-        fall_back_to_focused(Note{NoteKind::focus_out_of_range, out_of_range(focus, lines)}, in, *body,
-                             setup, trace);
+        fall_back_to_focused(Note{NoteKind::focus_out_of_range, out_of_range(focus, lines)}, in, *body, setup, trace);
         return setup;
     }
     const Trapezoid trapezoid = trapezoid_around(hull, l, lines, focus, trace);
@@ -333,8 +355,12 @@ ShadowSetup compute_tsm(const ShadowInputs& in, const Settings& s, Trace* trace)
 }
 
 std::vector<SettingSpec> tsm_settings() {
-    return {{"focus", "80% rule: the focus region, this fraction of the view's depth, ends on the map's 80% line", "0.5",
-             0.05, 1.0, {}},
+    return {{"focus",
+             "80% rule: the focus region, this fraction of the view's depth, ends on the map's 80% line",
+             "0.5",
+             0.05,
+             1.0,
+             {}},
             body_kernel_setting()};
 }
 
