@@ -13,13 +13,13 @@ struct ChildLimits {
     double seconds = 60.0;  // wall-clock time before the child is killed
     // Resident memory the child may take beyond what it shares with the caller at the fork; watched
     // by the caller (an address-space limit would not do: AddressSanitizer reserves terabytes).
-    std::size_t extra_bytes = std::size_t{8} << 30;
+    std::size_t extra_bytes = std::size_t{4} << 30;  // a 1M-triangle OBJ takes under 1 GiB
 };
 
 struct ChildResult {
     std::string bytes;    // what the work returned, when it ended normally
     std::string failure;  // empty, or why there is no answer: "crashed (signal 11, SIGSEGV)",
-                          // "took over 60 s", "took over 8 GiB of memory", "exited with status 3"
+                          // "took over 60 s", "took over 4 GiB of memory", "exited with status 3"
     bool ok() const { return failure.empty(); }
 };
 
