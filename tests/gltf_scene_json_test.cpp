@@ -2,6 +2,8 @@
 // and marks objects, by name, as neither casting nor receiving, which the tessellation's caster flags
 // and the object boxes carry on; the window's choices saved and loaded again come back the same; a
 // name or a choice the file does not have is refused naming the JSON file and the JSON path.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,9 +29,11 @@ namespace fs = std::filesystem;
 constexpr double kTolerance = 1e-9;
 constexpr std::size_t kGround = 0, kRoof = 1;  // the objects of two_camera_scene, in its node order
 
-// `text` in a fresh file at `relative` (sub-directories made) under the test's temporary directory.
+// `text` in a fresh file at `relative` (sub-directories made) under this test process's own temporary
+// directory (ctest runs tests in parallel processes: a shared one had a test read another's file).
 std::string written(const fs::path& relative, const std::string& text) {
-    const fs::path path = fs::path(::testing::TempDir()) / "gltf_scene_json" / relative;
+    const fs::path path =
+        fs::path(::testing::TempDir()) / ("gltf_scene_json_" + std::to_string(::getpid())) / relative;
     fs::create_directories(path.parent_path());
     std::ofstream(path, std::ios::binary) << text;
     return path.string();
