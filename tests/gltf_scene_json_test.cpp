@@ -32,8 +32,7 @@ constexpr std::size_t kGround = 0, kRoof = 1;  // the objects of two_camera_scen
 // `text` in a fresh file at `relative` (sub-directories made) under this test process's own temporary
 // directory (ctest runs tests in parallel processes: a shared one had a test read another's file).
 std::string written(const fs::path& relative, const std::string& text) {
-    const fs::path path =
-        fs::path(::testing::TempDir()) / ("gltf_scene_json_" + std::to_string(::getpid())) / relative;
+    const fs::path path = fs::path(::testing::TempDir()) / ("gltf_scene_json_" + std::to_string(::getpid())) / relative;
     fs::create_directories(path.parent_path());
     std::ofstream(path, std::ios::binary) << text;
     return path.string();
