@@ -12,14 +12,14 @@
 
 namespace shadowlab {
 
-std::optional<IntersectionBody> start_warp(const std::string& method, const ShadowInputs& in,
-                                           const Settings& settings, ShadowSetup& setup, Trace* trace) {
+std::optional<IntersectionBody> start_warp(const std::string& method, const ShadowInputs& in, const Settings& settings,
+                                           ShadowSetup& setup, Trace* trace) {
     auto body = body_or_uniform(in, settings, setup, trace);
     if (body && !in.light.is_directional()) {
-        fall_back_to_focused(Note{NoteKind::not_directional,
-                                             method + " warps directional lights only; focused map used for this " +
-                                                 to_string(in.light.type) + " light"},
-                             in, *body, setup, trace);
+        fall_back_to_focused(
+            Note{NoteKind::not_directional, method + " warps directional lights only; focused map used for this " +
+                                                to_string(in.light.type) + " light"},
+            in, *body, setup, trace);
         return std::nullopt;
     }
     return body;
@@ -153,8 +153,8 @@ glm::dvec3 light_ray_at(const Light& light, const glm::dvec3& p) {
     return light.is_directional() ? light.direction : glm::normalize(p - light.position);
 }
 
-void fall_back_to_focused(Note reason, const ShadowInputs& in, const IntersectionBody& body,
-                          ShadowSetup& setup, Trace* trace) {
+void fall_back_to_focused(Note reason, const ShadowInputs& in, const IntersectionBody& body, ShadowSetup& setup,
+                          Trace* trace) {
     add_fallback(setup, std::move(reason));
     fit_focused(in, body, setup, trace);
 }
@@ -192,11 +192,17 @@ std::string warp_choices(const Trace& trace) {
         const char* step;
         const char* value;
     };
-    static constexpr Choice kChoices[] = {
-        {"n-opt", "z_n"}, {"n-opt", "z_f"}, {"n-opt", "n"},  // lispsm
-        {"psm-virtual-camera", "near"}, {"psm-virtual-camera", "far"}, {"psm-virtual-camera", "slide"},
-        {"tsm-centre-line", "near"}, {"tsm-centre-line", "far"}, {"tsm-focus-80", "eta"},
-        {"xpsm-7", "lengthP"}, {"xpsm-5", "maxLengthP"}};
+    static constexpr Choice kChoices[] = {{"n-opt", "z_n"},
+                                          {"n-opt", "z_f"},
+                                          {"n-opt", "n"},  // lispsm
+                                          {"psm-virtual-camera", "near"},
+                                          {"psm-virtual-camera", "far"},
+                                          {"psm-virtual-camera", "slide"},
+                                          {"tsm-centre-line", "near"},
+                                          {"tsm-centre-line", "far"},
+                                          {"tsm-focus-80", "eta"},
+                                          {"xpsm-7", "lengthP"},
+                                          {"xpsm-5", "maxLengthP"}};
     std::string text;
     for (const Choice& choice : kChoices)
         if (const Step* step = trace.find(choice.step))
@@ -221,8 +227,10 @@ ProjectedPoints project(const std::vector<glm::dvec3>& points, const glm::dmat4&
     out.points.reserve(points.size());
     for (const glm::dvec3& p : points) {
         const glm::dvec4 h = m * glm::dvec4(p, 1.0);
-        if (h.w < min_w) ++out.left_out;
-        else out.points.push_back(glm::dvec3(h) / h.w);
+        if (h.w < min_w)
+            ++out.left_out;
+        else
+            out.points.push_back(glm::dvec3(h) / h.w);
     }
     return out;
 }

@@ -49,8 +49,8 @@ std::vector<glm::dvec3> body_within_frustum(const ConvexPolyhedron& body, const 
 glm::dvec3 light_ray_at(const Light& light, const glm::dvec3& p);
 
 // Names the fallback and fits the focused map to the body.
-void fall_back_to_focused(Note reason, const ShadowInputs& inputs, const IntersectionBody& body,
-                          ShadowSetup& setup, Trace* trace);
+void fall_back_to_focused(Note reason, const ShadowInputs& inputs, const IntersectionBody& body, ShadowSetup& setup,
+                          Trace* trace);
 
 // The view depths the warps read for the eye's range: what the camera can see of the receivers, as
 // Filament's LiSPSM takes them (computeNearFar over the receivers' volume), never the camera's near

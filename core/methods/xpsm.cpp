@@ -97,7 +97,7 @@ Warp projection_vector(const glm::dvec3& ls_view, const LightSpacePoints& ls, co
     const Interval receivers = projection_interval(ls.receivers, unit_p);  // step 4
     const double min_casters = casters.min, min_receivers = receivers.min;
     const double max_length_p = (epsilon_w - 1.0) / std::max(min_casters, min_receivers);  // step 5
-    const double optimal = coef / cos_gamma;                                                // step 6
+    const double optimal = coef / cos_gamma;                                               // step 6
     const bool clipped = max_length_p > 0.0 && optimal > max_length_p;                     // step 7
     const Warp warp{unit_p, clipped ? max_length_p : optimal, std::max(min_casters, min_receivers)};
     record(trace, [&](Trace& t) {
@@ -105,30 +105,36 @@ Warp projection_vector(const glm::dvec3& ls_view, const LightSpacePoints& ls, co
         // Fig. 5: the casters' and the receivers' intervals side by side, the focus interval between.
         const double gap = 0.03 * (std::max(casters.max, receivers.max) - std::min(casters.min, receivers.min));
         const Interval focus{warp.min_focus_proj, std::min(casters.max, receivers.max)};
-        Step& intervals = t.add("xpsm-4", "minCastersProj, minReceiversProj",
-                                "min over light-space points of p.xy · unitP", Space::light)
-                              .value("minCastersProj", min_casters).value("minReceiversProj", min_receivers)
-                              .shape("casters' interval", plot.interval(casters, gap), Role::casters)
-                              .shape("casters' label", Label{plot.at(casters.min, gap), "minCastersProj = " +
-                                                             label_number(casters.min)}, Role::casters)
-                              .shape("receivers' interval", plot.interval(receivers, -gap), Role::receivers)
-                              .shape("receivers' label", Label{plot.at(receivers.min, -gap), "minReceiversProj = " +
-                                                               label_number(receivers.min)}, Role::receivers);
+        Step& intervals =
+            t.add("xpsm-4", "minCastersProj, minReceiversProj", "min over light-space points of p.xy · unitP",
+                  Space::light)
+                .value("minCastersProj", min_casters)
+                .value("minReceiversProj", min_receivers)
+                .shape("casters' interval", plot.interval(casters, gap), Role::casters)
+                .shape("casters' label",
+                       Label{plot.at(casters.min, gap), "minCastersProj = " + label_number(casters.min)}, Role::casters)
+                .shape("receivers' interval", plot.interval(receivers, -gap), Role::receivers)
+                .shape("receivers' label",
+                       Label{plot.at(receivers.min, -gap), "minReceiversProj = " + label_number(receivers.min)},
+                       Role::receivers);
         if (focus.min < focus.max) intervals.shape("focus interval", plot.interval(focus, 0.0), Role::focus);
-        draw_arrow(intervals, "unitP", plot.at(std::min(casters.min, receivers.min), 2 * gap), {unit_p, 0.0},
-                   plot.arm, Role::step);
+        draw_arrow(intervals, "unitP", plot.at(std::min(casters.min, receivers.min), 2 * gap), {unit_p, 0.0}, plot.arm,
+                   Role::step);
         t.add("xpsm-5", "maxLengthP", "(εW - 1) / max(minCastersProj, minReceiversProj)", Space::light)
-            .value("maxLengthP", max_length_p).value("epsilonW", epsilon_w)
+            .value("maxLengthP", max_length_p)
+            .value("epsilonW", epsilon_w)
             .shape("focus start", plot.line_at(warp.min_focus_proj), Role::focus)
-            .shape("focus start label", Label{plot.at(warp.min_focus_proj, plot.width.max),
-                                              "focus starts: w = εW here if lengthP = maxLengthP = " +
-                                                  label_number(max_length_p)},
+            .shape("focus start label",
+                   Label{plot.at(warp.min_focus_proj, plot.width.max),
+                         "focus starts: w = εW here if lengthP = maxLengthP = " + label_number(max_length_p)},
                    Role::focus);
-        Step& length = t.add("xpsm-6", "cos γ and lengthP", "cos γ = V.xy · unitP; lengthP = coef / cos γ",
-                             Space::light)
-                           .value("cos_gamma", cos_gamma).value("coef", coef).value("lengthP", optimal)
-                           .shape("lengthP label", Label{glm::dvec3(0.0, 0.0, -plot.arm / 2),
-                                                         "lengthP = coef / cos γ = " + label_number(optimal)});
+        Step& length =
+            t.add("xpsm-6", "cos γ and lengthP", "cos γ = V.xy · unitP; lengthP = coef / cos γ", Space::light)
+                .value("cos_gamma", cos_gamma)
+                .value("coef", coef)
+                .value("lengthP", optimal)
+                .shape("lengthP label",
+                       Label{glm::dvec3(0.0, 0.0, -plot.arm / 2), "lengthP = coef / cos γ = " + label_number(optimal)});
         draw_eye_and_view(length, ls_view, plot.arm);
         draw_arrow(length, "unitP", glm::dvec3(0.0), {unit_p, 0.0}, plot.arm, Role::step);
         draw_angle(length, "γ", glm::dvec3(0.0), ls_view, {unit_p, 0.0}, plot.arm / 2);
@@ -136,13 +142,16 @@ Warp projection_vector(const glm::dvec3& ls_view, const LightSpacePoints& ls, co
         const double w_zero = -1.0 / warp.length_p;
         t.add("xpsm-7", "Clip lengthP", "if maxLengthP > 0 and lengthP > maxLengthP: lengthP = maxLengthP",
               Space::light)
-            .value("clipped", clipped ? 1.0 : 0.0).value("lengthP", warp.length_p)
+            .value("clipped", clipped ? 1.0 : 0.0)
+            .value("lengthP", warp.length_p)
             .shape("w = 0", plot.line_at(w_zero))
-            .shape("w = 0 label", Label{plot.at(w_zero, plot.width.max), "w = 0 at lengthP = " +
-                                        label_number(warp.length_p) + (clipped ? " (clipped)" : "")})
+            .shape("w = 0 label",
+                   Label{plot.at(w_zero, plot.width.max),
+                         "w = 0 at lengthP = " + label_number(warp.length_p) + (clipped ? " (clipped)" : "")})
             .shape("focus start", plot.line_at(warp.min_focus_proj), Role::focus)
-            .shape("focus start label", Label{plot.at(warp.min_focus_proj, plot.width.min),
-                                              "w = " + label_number(1.0 + warp.length_p * warp.min_focus_proj)},
+            .shape("focus start label",
+                   Label{plot.at(warp.min_focus_proj, plot.width.min),
+                         "w = " + label_number(1.0 + warp.length_p * warp.min_focus_proj)},
                    Role::focus);
     });
     return warp;
@@ -151,19 +160,20 @@ Warp projection_vector(const glm::dvec3& ls_view, const LightSpacePoints& ls, co
 // Steps 8 to 10: PPLS Transform, light space -> PPLS (step 10 is recorded with the body it carries).
 glm::dmat4 ppls_transform(const Warp& w, const LightSpacePoints& ls, Trace* trace) {
     const glm::dvec2 p = w.unit_p;
-    const glm::dmat4 projection = from_rows({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0},
-                                            {p.x * w.length_p, p.y * w.length_p, 0, 1});
+    const glm::dmat4 projection =
+        from_rows({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {p.x * w.length_p, p.y * w.length_p, 0, 1});
     const glm::dmat4 z_rotation = from_rows({p.x, p.y, 0, 0}, {p.y, -p.x, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1});
     const glm::dmat4 ppls_from_light = z_rotation * projection;  // row-vector "Projection * ZRotation"
     record(trace, [&](Trace& t) {
         const TopDownPlot plot = top_down_plot(ls, p);
         const double w_zero = -1.0 / w.length_p;  // the plane the projection sends to infinity
-        const PolygonSet singular_plane = PolygonSet{}.add(
-            {{plot.at(w_zero, plot.width.min), 1.0}, {plot.at(w_zero, plot.width.max), 1.0},
-             {plot.at(w_zero, plot.width.max) + glm::dvec3(0, 0, plot.z_max - plot.z_min), 1.0},
-             {plot.at(w_zero, plot.width.min) + glm::dvec3(0, 0, plot.z_max - plot.z_min), 1.0}});
-        t.add("xpsm-8", "Projection", "w = 1 + lengthP (unitP · xy): the projection vector as the w row",
-              Space::light).value("Projection", projection)
+        const PolygonSet singular_plane =
+            PolygonSet{}.add({{plot.at(w_zero, plot.width.min), 1.0},
+                              {plot.at(w_zero, plot.width.max), 1.0},
+                              {plot.at(w_zero, plot.width.max) + glm::dvec3(0, 0, plot.z_max - plot.z_min), 1.0},
+                              {plot.at(w_zero, plot.width.min) + glm::dvec3(0, 0, plot.z_max - plot.z_min), 1.0}});
+        t.add("xpsm-8", "Projection", "w = 1 + lengthP (unitP · xy): the projection vector as the w row", Space::light)
+            .value("Projection", projection)
             .shape("w = 0 plane", singular_plane)
             .shape("w = 0 label", Label{plot.at(w_zero, 0.5 * (plot.width.min + plot.width.max)), "w = 0"});
         Step& rotation = t.add("xpsm-9", "ZRotation", "rotation about z taking unitP onto the x axis", Space::light)
@@ -195,13 +205,16 @@ ProjectedPoints project_boxes(const std::vector<glm::dvec3>& ws_corners, const P
     out.points.reserve(ws_corners.size());
     auto add = [&](const glm::dvec3& p, bool keep) {
         const glm::dvec4 h = ppls_from_world * glm::dvec4(p, 1.0);
-        if (h.w < min_w) ++out.left_out;  // counted for the trace, as the seed leaves such points out
-        else if (keep) out.points.push_back(glm::dvec3(h) / h.w);
+        if (h.w < min_w)
+            ++out.left_out;  // counted for the trace, as the seed leaves such points out
+        else if (keep)
+            out.points.push_back(glm::dvec3(h) / h.w);
     };
     for (size_t i = 0; i + 8 <= ws_corners.size(); i += 8) {
         const glm::dvec3* box = &ws_corners[i];
         double lo = INFINITY, hi = -INFINITY;
-        for (int k = 0; k < 8; ++k) lo = std::min(lo, start.signed_distance(box[k])), hi = std::max(hi, start.signed_distance(box[k]));
+        for (int k = 0; k < 8; ++k)
+            lo = std::min(lo, start.signed_distance(box[k])), hi = std::max(hi, start.signed_distance(box[k]));
         const bool crosses = lo <= 0.0 && hi > 0.0;  // only these boxes are cut
         const ConvexPolyhedron kept = crosses ? clip(ConvexPolyhedron::box(bounds_of({box, box + 8})), start,
                                                      tolerance_for(bounds_of({box, box + 8})))
@@ -231,8 +244,8 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
     const std::vector<glm::dvec3> ws_receivers = corners_within(in.receivers, body->visible.bounds());
     const std::vector<glm::dvec3> ws_casters = corners_within(in.casters, body->body.bounds());
     if (ws_receivers.empty() || ws_casters.empty()) {
-        fall_back_to_focused(Note{NoteKind::nothing_to_warp, "nothing to warp; focused map used"}, in,
-                             *body, setup, trace);
+        fall_back_to_focused(Note{NoteKind::nothing_to_warp, "nothing to warp; focused map used"}, in, *body, setup,
+                             trace);
         return setup;
     }
 
@@ -245,39 +258,40 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
     const double v_xy = glm::length(glm::dvec2(v));
     record(trace, [&](Trace& t) {
         const double arm = glm::length(glm::dvec2(bounds_of(ls.receivers).extent())) / 4;
-        Step& space = t.add("xpsm-1", "LightSpace", "look-at along the light from the viewer: the light travels along +z",
-                            Space::light)
+        Step& space = t.add("xpsm-1", "LightSpace",
+                            "look-at along the light from the viewer: the light travels along +z", Space::light)
                           .value("LightSpace", light_from_world)
                           .shape("Casters", PointSet{ls.casters}, Role::casters)
                           .shape("Receivers", PointSet{ls.receivers}, Role::receivers);
         draw_arrow(space, "L", glm::dvec3(0.0, 0.0, -arm), {0, 0, 1}, arm, Role::light);
         t.set_frame(Space::light, light_from_world);
         draw_eye_and_view(t.add("xpsm-2", "V", "the view vector in light space", Space::light).value("V", v), v, arm);
-        Step& direction = t.add("xpsm-3", "unitP", "V.xy / |V.xy|; |V.xy| < 0.1 is the miner's lamp case", Space::light)
-                              .value("abs_V_xy", v_xy)
-                              .value("unitP", v_xy > 0 ? glm::dvec2(v) / v_xy : glm::dvec2(0.0))
-                              .shape("|V.xy| label",
-                                     Label{glm::dvec3(0.0, 0.0, -arm / 2), "|V.xy| = " + label_number(v_xy)});
+        Step& direction =
+            t.add("xpsm-3", "unitP", "V.xy / |V.xy|; |V.xy| < 0.1 is the miner's lamp case", Space::light)
+                .value("abs_V_xy", v_xy)
+                .value("unitP", v_xy > 0 ? glm::dvec2(v) / v_xy : glm::dvec2(0.0))
+                .shape("|V.xy| label", Label{glm::dvec3(0.0, 0.0, -arm / 2), "|V.xy| = " + label_number(v_xy)});
         draw_eye_and_view(direction, v, arm);
         if (v_xy > 0)
             draw_arrow(direction, "unitP", glm::dvec3(0.0), glm::dvec3(glm::dvec2(v) / v_xy, 0.0), arm, Role::step);
     });
     if (v_xy < 0.1) {
-        fall_back_to_focused(Note{NoteKind::miners_lamp, "|V.xy| = " + std::to_string(v_xy) +
-                                 " < 0.1, the light is almost parallel to the view; focused map used"},
-                             in, *body, setup, trace);
+        fall_back_to_focused(
+            Note{NoteKind::miners_lamp, "|V.xy| = " + std::to_string(v_xy) +
+                                            " < 0.1, the light is almost parallel to the view; focused map used"},
+            in, *body, setup, trace);
         return setup;
     }
     const Warp warp = projection_vector(v, ls, s, trace);
     const glm::dmat4 ppls_from_light = ppls_transform(warp, ls, trace);  // steps 8 to 10: PPLS Transform
-    const double min_w = s.number("epsilonW") * (1.0 - 1e-9);  // the extreme point itself stays in
+    const double min_w = s.number("epsilonW") * (1.0 - 1e-9);            // the extreme point itself stays in
     record(trace, [&](Trace& t) {
         const ProjectedPoints ppls_body = project(body->body.vertices, ppls_from_light * light_from_world, min_w);
-        Step& transform = t.add("xpsm-10", "PPLS Transform", "Projection * ZRotation (row vectors): light space -> PPLS",
-                                Space::ppls)
-                              .value("PPLS_Transform", ppls_from_light)
-                              .shape("eye", PointSet{{glm::dvec3(0.0)}}, Role::view)
-                              .shape("eye label", Label{glm::dvec3(0.0), "eye"}, Role::view);
+        Step& transform =
+            t.add("xpsm-10", "PPLS Transform", "Projection * ZRotation (row vectors): light space -> PPLS", Space::ppls)
+                .value("PPLS_Transform", ppls_from_light)
+                .shape("eye", PointSet{{glm::dvec3(0.0)}}, Role::view)
+                .shape("eye label", Label{glm::dvec3(0.0), "eye"}, Role::view);
         if (!ppls_body.points.empty()) transform.shape("B in PPLS", PointSet{ppls_body.points}, Role::focus);
         t.set_frame(Space::ppls, ppls_from_light * light_from_world);
     });
@@ -303,7 +317,8 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
         Step& boxes = t.add("xpsm-12", "PPLS CastersBox, ReceiversBox",
                             "AABBs of the PPLS points; the receivers' kept within the visible region's", Space::ppls);
         Step& region = t.add("xpsm-13", "FocusRegion", "Intersect 2D (PPLS CastersBox, PPLS ReceiversBox)", Space::ppls)
-                           .value("MinPoint", focus_min).value("MaxPoint", focus_max);
+                           .value("MinPoint", focus_min)
+                           .value("MaxPoint", focus_max);
         if (ppls_casters_box.empty() || ppls_receivers_box.empty()) {  // every point of one kind left out
             for (Step* step : {&points, &boxes, &region})
                 step->shape("nothing label", Label{glm::dvec3(0.0), "no PPLS point of one kind: nothing to focus on"});
@@ -318,17 +333,22 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
         region.shape("CastersBox", rectangle_outline(ppls_casters_box, z), Role::casters)
             .shape("ReceiversBox", rectangle_outline(ppls_receivers_box, z), Role::receivers);
         if (focus_min.x < focus_max.x && focus_min.y < focus_max.y)
-            region.shape("FocusRegion", PolygonSet{}.add({{focus_min, z, 1.0}, {focus_max.x, focus_min.y, z, 1.0},
-                                                          {focus_max, z, 1.0}, {focus_min.x, focus_max.y, z, 1.0}}),
-                         Role::focus)
+            region
+                .shape("FocusRegion",
+                       PolygonSet{}.add({{focus_min, z, 1.0},
+                                         {focus_max.x, focus_min.y, z, 1.0},
+                                         {focus_max, z, 1.0},
+                                         {focus_min.x, focus_max.y, z, 1.0}}),
+                       Role::focus)
                 .shape("FocusRegion label", Label{{focus_min, z}, "FocusRegion"}, Role::focus);
         else
             region.shape("empty label", Label{{focus_min, z}, "FocusRegion is empty"}, Role::focus);
     });
     if (ppls_casters_box.empty() || ppls_receivers_box.empty() || focus_min.x >= focus_max.x ||
         focus_min.y >= focus_max.y) {
-        fall_back_to_focused(Note{NoteKind::empty_focus_region, "no caster's light rays meet a receiver in PPLS; focused map used"},
-                             in, *body, setup, trace);
+        fall_back_to_focused(
+            Note{NoteKind::empty_focus_region, "no caster's light rays meet a receiver in PPLS; focused map used"}, in,
+            *body, setup, trace);
         return setup;
     }
 
@@ -336,9 +356,9 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
     const double z_min = std::min(ppls_casters_box.min.z, ppls_receivers_box.min.z);
     const double z_max = std::max(ppls_casters_box.max.z, ppls_receivers_box.max.z);
     const Aabb focus{{focus_min, z_min}, {focus_max, z_max}};
-    const glm::dmat4 ppls_from_uvz = from_rows({focus.extent().x, 0, 0, focus.min.x},  // step 14: FocusRegionBasis
-                                               {0, focus.extent().y, 0, focus.min.y},
-                                               {0, 0, focus.extent().z, focus.min.z}, {0, 0, 0, 1});
+    const glm::dmat4 ppls_from_uvz =
+        from_rows({focus.extent().x, 0, 0, focus.min.x},  // step 14: FocusRegionBasis
+                  {0, focus.extent().y, 0, focus.min.y}, {0, 0, focus.extent().z, focus.min.z}, {0, 0, 0, 1});
     const glm::dmat4 uvz_from_ppls = unit_from_box(focus);  // step 15: UnitCubeTransform
     // Steps 16 and 17: our maps stay in [0,1]^3, so NormalizedSpace is the identity.
     ShadowMap map;
@@ -349,14 +369,16 @@ ShadowSetup compute_xpsm(const ShadowInputs& in, const Settings& s, Trace* trace
     setup.maps.push_back(map);
     record(trace, [&](Trace& t) {
         // The basis itself: the origin Min and the three axes scaled by (Max - Min), around the focus box.
-        Step& basis = t.add("xpsm-14", "FocusRegionBasis", "scale (Max - Min) and offset Min, with ZMin/ZMax of both boxes",
-                            Space::ppls)
-                          .value("ZMin", z_min).value("ZMax", z_max).value("FocusRegionBasis", ppls_from_uvz)
+        Step& basis = t.add("xpsm-14", "FocusRegionBasis",
+                            "scale (Max - Min) and offset Min, with ZMin/ZMax of both boxes", Space::ppls)
+                          .value("ZMin", z_min)
+                          .value("ZMax", z_max)
+                          .value("FocusRegionBasis", ppls_from_uvz)
                           .shape("focus region", focus, Role::focus)
                           .shape("Min", Label{focus.min, "Min"});
         for (int axis = 0; axis < 3; ++axis)
-            basis.shape(std::string("axis ") + "xyz"[axis],
-                        Arrow{focus.min, focus.min + glm::dvec3(ppls_from_uvz[axis])});
+            basis.shape(
+                std::string("axis ") + "xyz" [axis], Arrow { focus.min, focus.min + glm::dvec3(ppls_from_uvz[axis]) });
         draw_unit_cube(t.add("xpsm-15", "UnitCubeTransform",
                              "FocusRegionBasis^-1: (p - Min) / (Max - Min) (Gusev's printed step 15 has wrong signs; "
                              "his section 3.8 is right)",

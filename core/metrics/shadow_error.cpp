@@ -74,8 +74,8 @@ struct PixelAliasing {
 // the texel (A_l) against the pixel (A_e) alone: the perspective factor; the measure on T over it
 // is the projection factor. Both use the same one-pixel steps: H's are the neighbours' view rays
 // met with H, so that a surface which is H has a projection factor of exactly 1.
-PixelAliasing pixel_aliasing(const Scene& scene, const ReferenceImage& ref, const ShadowMap& map, double texels,
-                             int x, int y) {
+PixelAliasing pixel_aliasing(const Scene& scene, const ReferenceImage& ref, const ShadowMap& map, double texels, int x,
+                             int y) {
     double sx = 1, sy = 1;
     const long right = neighbour(ref, x, y, 1, 0, sx), down = neighbour(ref, x, y, 0, 1, sy);
     if (right < 0 || down < 0) return {};
@@ -113,8 +113,8 @@ ShadowError unjudged(const ReferenceImage& ref) {
 void judge(ShadowError& e, const ReferenceImage& ref, size_t i, bool shadowed) {
     ++e.receiver_pixels;
     e.verdicts[i] = shadowed == !ref.lit[i] ? PixelVerdict::agree
-                    : shadowed             ? PixelVerdict::false_shadow
-                                           : PixelVerdict::false_light;
+                    : shadowed              ? PixelVerdict::false_shadow
+                                            : PixelVerdict::false_light;
 }
 
 // The shares of the receiver pixels judged wrong, each way.

@@ -98,13 +98,12 @@ void refuse_gltf_1(const json& root, const std::string& file) {
     const auto asset = root.find("asset");
     const bool has_asset = asset != root.end() && asset->is_object();
     const auto version = has_asset ? asset->find("version") : root.end();
-    const bool says_1 = has_asset && version != asset->end() && version->is_string() &&
-                        version->get<std::string>().starts_with("1.");
+    const bool says_1 =
+        has_asset && version != asset->end() && version->is_string() && version->get<std::string>().starts_with("1.");
     const auto scenes = root.find("scenes");
     const bool keyed_scenes = scenes != root.end() && scenes->is_object();
     if (says_1 || (keyed_scenes && !has_asset))
-        throw SceneError(file, has_asset ? "asset.version" : "scenes",
-                         "a glTF 1.0 file; ShadowLab reads glTF 2.0");
+        throw SceneError(file, has_asset ? "asset.version" : "scenes", "a glTF 1.0 file; ShadowLab reads glTF 2.0");
 }
 
 json gltf_json(const std::string& file) {
