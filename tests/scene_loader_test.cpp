@@ -20,9 +20,7 @@ using nlohmann::json;
 
 const std::string kFile = "test_scene.json";
 
-fs::path source_path(const std::string& relative) {
-    return fs::path(SHADOWLAB_SOURCE_DIR) / relative;
-}
+fs::path source_path(const std::string& relative) { return fs::path(SHADOWLAB_SOURCE_DIR) / relative; }
 
 fs::path write_temp(const std::string& name, const std::string& text) {
     const fs::path dir = fs::temp_directory_path() / "shadowlab_scene_test";
@@ -32,19 +30,14 @@ fs::path write_temp(const std::string& name, const std::string& text) {
     return path;
 }
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // The smallest valid scene: a light and one object.
-json minimal() {
-    return json::parse(R"({"light": {"type": "directional"}, "objects": [{"type": "box"}]})");
-}
+json minimal() { return json::parse(R"({"light": {"type": "directional"}, "objects": [{"type": "box"}]})"); }
 
 // Checks that `run` throws a SceneError naming the file, the JSON path and the expectation.
 template <class Run>
-void expect_thrown(Run run, const std::string& file, const std::string& path,
-                   const std::string& expected) {
+void expect_thrown(Run run, const std::string& file, const std::string& path, const std::string& expected) {
     try {
         run();
         ADD_FAILURE() << "accepted";
@@ -57,8 +50,7 @@ void expect_thrown(Run run, const std::string& file, const std::string& path,
     }
 }
 
-void expect_text_error(const std::string& text, const std::string& path,
-                       const std::string& expected) {
+void expect_text_error(const std::string& text, const std::string& path, const std::string& expected) {
     SCOPED_TRACE(text);
     expect_thrown([&] { parse_scene(text, kFile); }, kFile, path, expected);
 }
@@ -158,14 +150,11 @@ TEST(SceneRejects, MissingFile) {
 }
 
 TEST(SceneRejects, MalformedJsonWithLineAndColumn) {
-    expect_text_error("{\"light\": {},\n \"objects\": [{},]}", "",
-                      "malformed JSON at line 2, column 17");
+    expect_text_error("{\"light\": {},\n \"objects\": [{},]}", "", "malformed JSON at line 2, column 17");
     expect_text_error("", "", "malformed JSON at line 1, column 1");
 }
 
-TEST(SceneRejects, TopLevelNotAnObject) {
-    expect_text_error("[1, 2]", "", "expected an object, got [1,2]");
-}
+TEST(SceneRejects, TopLevelNotAnObject) { expect_text_error("[1, 2]", "", "expected an object, got [1,2]"); }
 
 TEST(SceneRejects, UnknownKeys) {
     json scene = minimal();
@@ -194,8 +183,7 @@ TEST(SceneRejects, StringWhereNumberExpected) {
 TEST(SceneRejects, ObjectWhereArrayExpected) {
     json scene = minimal();
     scene["objects"][0]["position"] = {{"x", 1}};
-    expect_error(scene, "objects[0].position",
-                 R"(expected an array of three numbers, got {"x":1})");
+    expect_error(scene, "objects[0].position", R"(expected an array of three numbers, got {"x":1})");
 }
 
 TEST(SceneRejects, WrongArrayLength) {
@@ -238,15 +226,14 @@ TEST(SceneRejects, InfiniteNumbers) {
     // nlohmann refuses 1e999 while parsing; the error still names the field.
     expect_text_error(R"({"camera": {"near": 1e999}, "light": {}, "objects": [{}]})", "camera.near",
                       "expected a finite number, got 1e999");
-    expect_text_error(R"({"light": {}, "objects": [{}, {"size": [1, -1e999, 1]}]})",
-                      "objects[1].size[1]", "expected a finite number, got -1e999");
+    expect_text_error(R"({"light": {}, "objects": [{}, {"size": [1, -1e999, 1]}]})", "objects[1].size[1]",
+                      "expected a finite number, got -1e999");
 }
 
 TEST(SceneRejects, NanAndInfInMemory) {
     Scene scene = parse_scene(minimal().dump(), kFile);
     scene.camera.aspect = std::numeric_limits<double>::quiet_NaN();
-    expect_thrown([&] { validate_scene(scene); }, kFile, "camera.aspect",
-                  "expected a finite number, got nan");
+    expect_thrown([&] { validate_scene(scene); }, kFile, "camera.aspect", "expected a finite number, got nan");
 
     scene = parse_scene(minimal().dump(), kFile);
     scene.objects[0].position.y = std::numeric_limits<double>::infinity();
@@ -367,8 +354,7 @@ TEST(SceneRejects, UnknownTypes) {
                  R"(expected one of "box", "sphere", "plane", "cylinder", "mesh", got "cube")");
     scene = minimal();
     scene["light"]["type"] = "sun";
-    expect_error(scene, "light.type",
-                 R"(expected one of "directional", "spot", "point", got "sun")");
+    expect_error(scene, "light.type", R"(expected one of "directional", "spot", "point", got "sun")");
 }
 
 TEST(SceneRejects, MeshWithoutFile) {
@@ -416,8 +402,8 @@ TEST(SceneRejects, MeshWithoutTriangles) {
                                      "property float y\nproperty float z\nend_header\n"
                                      "0 0 0\n1 0 0\n0 1 0\n");
     // Assimp itself may refuse a file without faces; either way the file is named.
-    expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[0].file"); }, kFile,
-                  "objects[0].file", mesh.string());
+    expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[0].file"); }, kFile, "objects[0].file",
+                  mesh.string());
 }
 
 // A tetrahedron whose vertex `bad` (0-based, as the file lists them) is replaced.
@@ -431,14 +417,14 @@ std::string tetrahedron_obj(int bad = -1, const std::string& replacement = "") {
 TEST(SceneRejects, MeshWithANonFiniteVertex) {
     // 1e39 is beyond float: Assimp reads it as inf.
     const fs::path mesh = write_temp("inf_vertex.obj", tetrahedron_obj(3, "v 0 1e39 0"));
-    expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[2].file"); }, kFile,
-                  "objects[2].file", "mesh file " + mesh.string() + ": a vertex of mesh 0 is not finite: [0, inf, 0]");
+    expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[2].file"); }, kFile, "objects[2].file",
+                  "mesh file " + mesh.string() + ": a vertex of mesh 0 is not finite: [0, inf, 0]");
 }
 
 TEST(SceneRejects, MeshWithOnlyZeroAreaTriangles) {
     const fs::path mesh = write_temp("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n");
-    expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[0].file"); }, kFile,
-                  "objects[0].file", "no triangle with a non-zero area (2 degenerate)");
+    expect_thrown([&] { load_triangle_mesh(mesh.string(), kFile, "objects[0].file"); }, kFile, "objects[0].file",
+                  "no triangle with a non-zero area (2 degenerate)");
 }
 
 TEST(SceneRejects, EmptyObjects) {
@@ -548,8 +534,8 @@ TEST(SceneRanges, EveryCornerOfAPlacedObjectWithinPlusMinus1e12) {
 
 TEST(SceneRanges, TheEndsOfEveryRangeAreAccepted) {
     json scene = minimal();
-    scene["camera"] = {{"position", {-1e12, 0, 1e12}}, {"target", {0, 0, 0}}, {"aspect", 1e-3},
-                       {"near", 1e-6}, {"far", 1}};
+    scene["camera"] = {
+        {"position", {-1e12, 0, 1e12}}, {"target", {0, 0, 0}}, {"aspect", 1e-3}, {"near", 1e-6}, {"far", 1}};
     scene["objects"] = json::parse(R"([{"size": [1e-6, 1e12, 1], "scale": [1e-6, 1e-6, 1e-6]},
                                        {"type": "sphere", "radius": 1, "scale": 1e6}])");
     EXPECT_NO_THROW(parse_scene(scene.dump(), kFile));
@@ -582,8 +568,7 @@ TEST(SceneRejects, ShippedBadFilesMatchExpectedTsv) {
             load_scene((dir / file).string());
             ADD_FAILURE() << file << " accepted";
         } catch (const SceneError& error) {
-            EXPECT_TRUE(contains(error.what(), file) && contains(error.what(), expected))
-                << error.what();
+            EXPECT_TRUE(contains(error.what(), file) && contains(error.what(), expected)) << error.what();
         }
     }
     for (const auto& entry : fs::directory_iterator(dir)) {
@@ -607,17 +592,17 @@ TEST_P(SceneMeshFormats, LoadsTheTetrahedron) {
     EXPECT_NEAR(glm::length(box.max - glm::dvec3(0.5, 1.0, 0.5)), 0.0, 1e-6);
 }
 
-INSTANTIATE_TEST_SUITE_P(SceneFormats, SceneMeshFormats,
-                         testing::Values("obj", "ply", "stl", "gltf"));
+INSTANTIATE_TEST_SUITE_P(SceneFormats, SceneMeshFormats, testing::Values("obj", "ply", "stl", "gltf"));
 
 TEST(SceneMesh, ZeroAreaTrianglesAreDroppedAndCounted) {
     // Collinear corners, and a corner repeated.
-    const fs::path path = write_temp("tetrahedron_and_slivers.obj",
-                                     tetrahedron_obj() + "v 1 0 -0.5\nf 1 2 5\nf 4 4 2\n");
+    const fs::path path =
+        write_temp("tetrahedron_and_slivers.obj", tetrahedron_obj() + "v 1 0 -0.5\nf 1 2 5\nf 4 4 2\n");
     const TriangleMesh mesh = load_triangle_mesh(path.string(), "", "file");
     EXPECT_EQ(mesh.triangles.size(), 4u);
     EXPECT_EQ(mesh.degenerate_dropped, 2u);
-    EXPECT_EQ(load_triangle_mesh(source_path("data/meshes/tetrahedron.obj").string(), "", "file").degenerate_dropped, 0u);
+    EXPECT_EQ(load_triangle_mesh(source_path("data/meshes/tetrahedron.obj").string(), "", "file").degenerate_dropped,
+              0u);
 }
 
 TEST(SceneMesh, NodeTransformsAreApplied) {
@@ -637,8 +622,7 @@ TEST(SceneMesh, LoadedRelativeToTheSceneFileAndShared) {
     scene["objects"] = json::parse(R"([
         {"type": "mesh", "file": "../meshes/tetrahedron.stl", "scale": 2},
         {"type": "mesh", "file": "../meshes/tetrahedron.stl", "position": [5, 0, 0]}])");
-    const Scene loaded =
-        parse_scene(scene.dump(), source_path("data/scenes/in_memory.json").string());
+    const Scene loaded = parse_scene(scene.dump(), source_path("data/scenes/in_memory.json").string());
     ASSERT_EQ(loaded.objects.size(), 2u);
     EXPECT_EQ(loaded.objects[0].mesh_file, "../meshes/tetrahedron.stl");
     EXPECT_EQ(loaded.objects[0].mesh, loaded.objects[1].mesh);
@@ -693,13 +677,10 @@ TEST(SceneObjectBounds, RotationOrderIsXThenYThenZ) {
 // ---- shipped scenes ----------------------------------------------------------------------------
 
 double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
-    return glm::degrees(
-        std::acos(glm::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0, 1.0)));
+    return glm::degrees(std::acos(glm::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0, 1.0)));
 }
 
-Scene shipped(const std::string& name) {
-    return load_scene(source_path("data/scenes/" + name + ".json").string());
-}
+Scene shipped(const std::string& name) { return load_scene(source_path("data/scenes/" + name + ".json").string()); }
 
 TEST(SceneFiles, EveryShippedSceneLoads) {
     std::set<std::string> names;
@@ -712,9 +693,8 @@ TEST(SceneFiles, EveryShippedSceneLoads) {
         EXPECT_LT(fs::file_size(entry.path()), 200u * 1024u);
         names.insert(entry.path().stem().string());
     }
-    for (const char* name :
-         {"default", "light_parallel_behind", "light_parallel_front", "casters_behind",
-          "light_overhead", "far_near_1e5", "box_on_plane", "spot", "point"})
+    for (const char* name : {"default", "light_parallel_behind", "light_parallel_front", "casters_behind",
+                             "light_overhead", "far_near_1e5", "box_on_plane", "spot", "point"})
         EXPECT_TRUE(names.count(name)) << name;
 }
 
@@ -758,14 +738,12 @@ protected:
 
 TEST_P(SceneFrustum, CornersLieOnTheirPlanes) {
     // Per plane (near, far, left, right, bottom, top), the corners on it.
-    const int on_plane[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 3, 4, 7},
-                                {1, 2, 5, 6}, {0, 1, 4, 5}, {2, 3, 6, 7}};
+    const int on_plane[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 3, 4, 7}, {1, 2, 5, 6}, {0, 1, 4, 5}, {2, 3, 6, 7}};
     for (int p = 0; p < 6; ++p)
         for (int c : on_plane[p])
             EXPECT_NEAR(frustum.planes[p].signed_distance(frustum.corners[c]), 0.0, tolerance)
                 << "plane " << p << " corner " << c;
-    for (const glm::dvec3& corner : frustum.corners)
-        EXPECT_TRUE(frustum.contains(corner, tolerance));
+    for (const glm::dvec3& corner : frustum.corners) EXPECT_TRUE(frustum.contains(corner, tolerance));
 }
 
 TEST_P(SceneFrustum, CornerOrderFollowsTheImageAxes) {
@@ -775,10 +753,8 @@ TEST_P(SceneFrustum, CornerOrderFollowsTheImageAxes) {
         EXPECT_GT(glm::dot(frustum.corners[base + 3] - frustum.corners[base], camera.up), 0.0);
     }
     const double far_half_height = std::tan(glm::radians(camera.fov_y_deg) / 2) * camera.far;
-    EXPECT_NEAR(glm::length(frustum.corners[7] - frustum.corners[4]), 2 * far_half_height,
-                tolerance);
-    EXPECT_NEAR(glm::length(frustum.corners[5] - frustum.corners[4]),
-                2 * far_half_height * camera.aspect, tolerance);
+    EXPECT_NEAR(glm::length(frustum.corners[7] - frustum.corners[4]), 2 * far_half_height, tolerance);
+    EXPECT_NEAR(glm::length(frustum.corners[5] - frustum.corners[4]), 2 * far_half_height * camera.aspect, tolerance);
 }
 
 TEST_P(SceneFrustum, ContainsTheMiddleAndExcludesOutsidePoints) {
@@ -794,8 +770,7 @@ TEST_P(SceneFrustum, ContainsTheMiddleAndExcludesOutsidePoints) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SceneNearFar, SceneFrustum,
-                         testing::Values(std::pair{0.1, 100.0}, std::pair{1e-3, 1e4},
-                                         std::pair{1.0, 1e7}));
+                         testing::Values(std::pair{0.1, 100.0}, std::pair{1e-3, 1e4}, std::pair{1.0, 1e7}));
 
 TEST(SceneCamera, FrustumAgreesWithTheMatrices) {
     const Camera camera = oblique_camera(0.5, 40);

@@ -23,8 +23,7 @@ public:
     const std::string& problem() const { return problem_; }
 
 private:
-    static std::string format(const std::string& file, const std::string& path,
-                              const std::string& problem) {
+    static std::string format(const std::string& file, const std::string& path, const std::string& problem) {
         std::string out = file.empty() ? std::string("<scene>") : file;
         if (!path.empty()) out += ": " + path;
         return printable_text(out + ": " + problem);

@@ -71,9 +71,7 @@ constexpr std::array kShapes{Shape::box, Shape::sphere, Shape::plane, Shape::cyl
 constexpr std::array kLightTypes{LightType::directional, LightType::spot, LightType::point};
 constexpr std::array kProjections{CameraProjection::perspective, CameraProjection::orthographic};
 
-std::string join_path(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
-}
+std::string join_path(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 
 std::string join(const std::vector<std::string>& items) {
     std::string out;
@@ -110,8 +108,7 @@ std::string show(const json& value) {
 std::string count_of(std::size_t count, const std::string& adjective = "") {
     static const char* const words[] = {"no", "a", "two", "three"};
     const std::string word = count < 4 ? words[count] : std::to_string(count);
-    return word + (adjective.empty() ? "" : " " + adjective) +
-           (count == 1 ? " number" : " numbers");
+    return word + (adjective.empty() ? "" : " " + adjective) + (count == 1 ? " number" : " numbers");
 }
 
 // ---- JSON syntax ---------------------------------------------------------------------------
@@ -170,8 +167,7 @@ private:
     std::string path() const {
         std::string out;
         for (const Level& level : levels_)
-            out = level.array ? out + "[" + std::to_string(level.index) + "]"
-                              : join_path(out, level.key);
+            out = level.array ? out + "[" + std::to_string(level.index) + "]" : join_path(out, level.key);
         return out;
     }
 
@@ -194,19 +190,15 @@ std::vector<std::string> camera_keys(CameraProjection projection) {
 
 std::vector<std::string> light_keys(LightType type) {
     switch (type) {
-        case LightType::directional:
-            return {"type", "direction", "angular_radius_deg"};
-        case LightType::spot:
-            return {"type", "direction", "position", "cone_deg", "range", "radius"};
-        case LightType::point:
-            return {"type", "position", "range", "radius"};
+        case LightType::directional: return {"type", "direction", "angular_radius_deg"};
+        case LightType::spot: return {"type", "direction", "position", "cone_deg", "range", "radius"};
+        case LightType::point: return {"type", "position", "range", "radius"};
     }
     return {};
 }
 
 std::vector<std::string> object_keys(Shape shape) {
-    std::vector<std::string> keys{"type",  "name",  "position", "rotation",
-                                  "scale", "casts", "receives"};
+    std::vector<std::string> keys{"type", "name", "position", "rotation", "scale", "casts", "receives"};
     switch (shape) {
         case Shape::box: keys.push_back("size"); break;
         case Shape::sphere: keys.push_back("radius"); break;
@@ -261,8 +253,7 @@ private:
     [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
         throw SceneError(file_, path, problem);
     }
-    void expect(bool ok, const std::string& path, const std::string& expected,
-                const json& got) const {
+    void expect(bool ok, const std::string& path, const std::string& expected, const json& got) const {
         if (!ok) fail(path, "expected " + expected + ", got " + show(got));
     }
     void expect_object(const json& value, const std::string& path) const {
@@ -273,12 +264,11 @@ private:
         if (!value) fail(key, "required, but missing");
         return *value;
     }
-    void check_keys(const json& object, const std::string& path,
-                    const std::vector<std::string>& allowed, const std::string& owner) const {
+    void check_keys(const json& object, const std::string& path, const std::vector<std::string>& allowed,
+                    const std::string& owner) const {
         for (const auto& [key, value] : object.items())
             if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-                fail(join_path(path, key),
-                     "unknown key; allowed for " + owner + ": " + join(allowed));
+                fail(join_path(path, key), "unknown key; allowed for " + owner + ": " + join(allowed));
     }
 
     // One parse() per field type, so that read_field() serves them all.
@@ -302,9 +292,7 @@ private:
         expect(value.is_string(), path, "a string", value);
         out = value.get<std::string>();
     }
-    void parse(const json& value, const std::string& path, Shape& out) const {
-        out = parse_enum(value, path, kShapes);
-    }
+    void parse(const json& value, const std::string& path, Shape& out) const { out = parse_enum(value, path, kShapes); }
     void parse(const json& value, const std::string& path, LightType& out) const {
         out = parse_enum(value, path, kLightTypes);
     }
@@ -316,19 +304,16 @@ private:
         if (const json* value = find_field(object, key)) parse(*value, join_path(path, key), out);
     }
 
-    std::vector<double> numbers(const json& value, const std::string& path,
-                                std::size_t count) const {
+    std::vector<double> numbers(const json& value, const std::string& path, std::size_t count) const {
         const bool ok = value.is_array() && value.size() == count &&
-                        std::all_of(value.begin(), value.end(),
-                                    [](const json& item) { return item.is_number(); });
+                        std::all_of(value.begin(), value.end(), [](const json& item) { return item.is_number(); });
         expect(ok, path, "an array of " + count_of(count), value);
         std::vector<double> out;
         for (const json& item : value) out.push_back(item.get<double>());
         return out;
     }
     template <class Enum, std::size_t N>
-    Enum parse_enum(const json& value, const std::string& path,
-                    const std::array<Enum, N>& all) const {
+    Enum parse_enum(const json& value, const std::string& path, const std::array<Enum, N>& all) const {
         std::vector<std::string> names;
         for (Enum item : all) {
             if (value.is_string() && value.get<std::string>() == to_string(item)) return item;
@@ -360,8 +345,7 @@ private:
         expect_object(value, path);
         Light light;
         read_field(value, path, "type", light.type);
-        check_keys(value, path, light_keys(light.type),
-                   std::string("a ") + to_string(light.type) + " light");
+        check_keys(value, path, light_keys(light.type), std::string("a ") + to_string(light.type) + " light");
         read_field(value, path, "direction", light.direction);
         read_field(value, path, "position", light.position);
         read_field(value, path, "cone_deg", light.cone_deg);
@@ -405,8 +389,7 @@ private:
         expect_object(value, path);
         SceneObject object;
         read_field(value, path, "type", object.shape);
-        check_keys(value, path, object_keys(object.shape),
-                   std::string("a ") + to_string(object.shape));
+        check_keys(value, path, object_keys(object.shape), std::string("a ") + to_string(object.shape));
         object.name = std::string(to_string(object.shape)) + "_" + std::to_string(index);
         read_field(value, path, "name", object.name);
         read_field(value, path, "position", object.position);
@@ -415,8 +398,7 @@ private:
         read_field(value, path, "height", object.height);
         read_field(value, path, "casts", object.casts);
         read_field(value, path, "receives", object.receives);
-        if (const json* scale = find_field(value, "scale"))
-            object.scale = read_scale(*scale, join_path(path, "scale"));
+        if (const json* scale = find_field(value, "scale")) object.scale = read_scale(*scale, join_path(path, "scale"));
         if (const json* size = find_field(value, "size"))
             object.size = read_size(*size, join_path(path, "size"), object);
         if (object.shape == Shape::mesh) load_mesh(value, join_path(path, "file"), object);
@@ -432,8 +414,7 @@ private:
     }
 
     // A box has three extents, a plane two: [x, z].
-    glm::dvec3 read_size(const json& value, const std::string& path,
-                         const SceneObject& object) const {
+    glm::dvec3 read_size(const json& value, const std::string& path, const SceneObject& object) const {
         if (object.shape == Shape::box) {
             glm::dvec3 size;
             parse(value, path, size);
@@ -448,9 +429,7 @@ private:
         if (!file) fail(path, "required for a mesh, but missing");
         parse(*file, path, object.mesh_file);
         std::shared_ptr<const TriangleMesh>& mesh = meshes_[object.mesh_file];
-        if (!mesh)
-            mesh = std::make_shared<const TriangleMesh>(
-                load_triangle_mesh(object.mesh_file, file_, path));
+        if (!mesh) mesh = std::make_shared<const TriangleMesh>(load_triangle_mesh(object.mesh_file, file_, path));
         object.mesh = mesh;
     }
 
@@ -480,28 +459,19 @@ private:
     [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
         throw SceneError(file_, path, problem);
     }
-    void expect(bool ok, const std::string& path, const std::string& expected,
-                const std::vector<double>& got) const {
+    void expect(bool ok, const std::string& path, const std::string& expected, const std::vector<double>& got) const {
         if (!ok) fail(path, "expected " + expected + ", got " + format_numbers(got));
     }
 
-    void check_numbers(const std::vector<double>& values, const std::string& path,
-                       bool positive) const {
-        const auto all = [&](auto predicate) {
-            return std::all_of(values.begin(), values.end(), predicate);
-        };
-        expect(all([](double x) { return std::isfinite(x); }), path,
-               count_of(values.size(), "finite"), values);
-        if (positive)
-            expect(all([](double x) { return x > 0.0; }), path, count_of(values.size(), "positive"),
-                   values);
+    void check_numbers(const std::vector<double>& values, const std::string& path, bool positive) const {
+        const auto all = [&](auto predicate) { return std::all_of(values.begin(), values.end(), predicate); };
+        expect(all([](double x) { return std::isfinite(x); }), path, count_of(values.size(), "finite"), values);
+        if (positive) expect(all([](double x) { return x > 0.0; }), path, count_of(values.size(), "positive"), values);
     }
     // Each value within the range, named by its own path: camera.position[0].
-    void check_range(const std::vector<double>& values, const std::string& path,
-                     const limits::RealRange& range) const {
+    void check_range(const std::vector<double>& values, const std::string& path, const limits::RealRange& range) const {
         for (std::size_t i = 0; i < values.size(); ++i)
-            expect(limits::within(range, values[i]),
-                   values.size() == 1 ? path : path + "[" + std::to_string(i) + "]",
+            expect(limits::within(range, values[i]), values.size() == 1 ? path : path + "[" + std::to_string(i) + "]",
                    "a number within " + limits::shown(range), {values[i]});
     }
     void finite(const std::vector<double>& values, const std::string& path) const {
@@ -513,8 +483,7 @@ private:
         check_range(components(v), path, limits::coordinate);
     }
     // Positive, and within the range (lengths, scales, the aspect).
-    void positive(const std::vector<double>& values, const std::string& path,
-                  const limits::RealRange& range) const {
+    void positive(const std::vector<double>& values, const std::string& path, const limits::RealRange& range) const {
         check_numbers(values, path, true);
         check_range(values, path, range);
     }
@@ -541,8 +510,7 @@ private:
         expect(glm::length(camera.target - camera.position) > kMinLength, "camera.target",
                "a point different from position", components(camera.target));
         direction(camera.up, "camera.up");
-        const double sine =
-            glm::length(glm::cross(normalize_safely(camera.up), camera.view_direction()));
+        const double sine = glm::length(glm::cross(normalize_safely(camera.up), camera.view_direction()));
         expect(sine > kMinSineToView, "camera.up", "a direction not parallel to the view direction",
                components(camera.up));
         if (camera.is_orthographic())
@@ -557,13 +525,11 @@ private:
     void check_far(double near, double far) const {
         finite({far}, "camera.far");
         if (!(far > near))
-            fail("camera.far", "must be greater than near (" + format_number(near) + "), got " +
-                                   format_number(far));
+            fail("camera.far", "must be greater than near (" + format_number(near) + "), got " + format_number(far));
         check_range({far}, "camera.far", limits::length);
         if (far > limits::far_over_near_max * near)
-            fail("camera.far", "must be at most " + limits::shown(limits::far_over_near_max) +
-                                   " times near (" + format_number(near) + "), got " +
-                                   format_number(far));
+            fail("camera.far", "must be at most " + limits::shown(limits::far_over_near_max) + " times near (" +
+                                   format_number(near) + "), got " + format_number(far));
     }
 
     // Only the fields the light's type uses.
@@ -634,8 +600,7 @@ private:
         const double reach = std::max(largest_magnitude(box.min), largest_magnitude(box.max));
         if (!limits::within(limits::coordinate, reach))
             fail(path, "expected every corner within " + limits::shown(limits::coordinate) +
-                           " once placed (position, scale and size together), got a corner at " +
-                           format_number(reach));
+                           " once placed (position, scale and size together), got a corner at " + format_number(reach));
     }
 
     const std::string& file_;
@@ -652,8 +617,7 @@ bool references_gltf(const json& root) { return root.is_object() && root.contain
 std::string file_text(const std::string& path) {
     std::error_code error;
     std::ifstream in(path, std::ios::binary);
-    if (!std::filesystem::is_regular_file(path, error) || !in)
-        throw SceneError(path, "", "cannot open file");
+    if (!std::filesystem::is_regular_file(path, error) || !in) throw SceneError(path, "", "cannot open file");
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();

@@ -91,7 +91,8 @@ MainWindow::MainWindow(QWidget* parent)
 
     // Four linked views: World | Camera over Light space | Shadow map; each can show any view.
     auto* rows = new QSplitter(Qt::Vertical, this);
-    for (const auto& pair : {std::pair{ViewKind::world, ViewKind::camera}, std::pair{ViewKind::light, ViewKind::shadow_map}}) {
+    for (const auto& pair :
+         {std::pair{ViewKind::world, ViewKind::camera}, std::pair{ViewKind::light, ViewKind::shadow_map}}) {
         auto* row = new QSplitter(Qt::Horizontal, rows);
         for (ViewKind v : {pair.first, pair.second}) {
             auto* panel = new ViewPanel(v, row);
@@ -110,7 +111,8 @@ MainWindow::MainWindow(QWidget* parent)
                 if (glm::length(scene_.camera.target - position) > 0.0) scene_.camera.position = position;
                 recompute();
             });
-            connect(panel, &ViewPanel::lightHandleMoved, this, [this](const glm::dvec3& point) { move_light_to(point); });
+            connect(panel, &ViewPanel::lightHandleMoved, this,
+                    [this](const glm::dvec3& point) { move_light_to(point); });
         }
         splitters_.push_back(row);
     }
@@ -480,8 +482,9 @@ void MainWindow::show_before_after_warp() {
 }
 
 void MainWindow::open_dialog() {
-    const QString path = QFileDialog::getOpenFileName(this, "Open a scene or a mesh", QString(),
-                                                      "Scenes and meshes (*.json *.obj *.ply *.stl *.gltf *.glb);;All files (*)");
+    const QString path =
+        QFileDialog::getOpenFileName(this, "Open a scene or a mesh", QString(),
+                                     "Scenes and meshes (*.json *.obj *.ply *.stl *.gltf *.glb);;All files (*)");
     if (!path.isEmpty()) open_file(path);
 }
 
@@ -499,8 +502,10 @@ void MainWindow::export_view(ViewPanel* panel) {
 
 void MainWindow::export_matrices(MatrixFormat format, bool to_clipboard) {
     if (!inspection_) return;
-    if (!inspection_->has_map()) return message(QString::fromStdString(inspection_->name() + " has no shadow-map matrices"), true);
-    const QString text = QString::fromStdString(shadowlab::export_matrices(inspection_->method->name, inspection_->setup, format));
+    if (!inspection_->has_map())
+        return message(QString::fromStdString(inspection_->name() + " has no shadow-map matrices"), true);
+    const QString text =
+        QString::fromStdString(shadowlab::export_matrices(inspection_->method->name, inspection_->setup, format));
     if (to_clipboard) {
         QApplication::clipboard()->setText(text);
         return message("matrices copied to the clipboard", false);
@@ -623,8 +628,10 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     QSettings settings;
     settings.setValue("geometry", saveGeometry());
     settings.setValue("windowState", saveState());
-    for (size_t i = 0; i < splitters_.size(); ++i) settings.setValue(QString("splitter%1").arg(i), splitters_[i]->saveState());
-    for (size_t i = 0; i < panels_.size(); ++i) settings.setValue(QString("panel%1").arg(i), to_string(panels_[i]->view()));
+    for (size_t i = 0; i < splitters_.size(); ++i)
+        settings.setValue(QString("splitter%1").arg(i), splitters_[i]->saveState());
+    for (size_t i = 0; i < panels_.size(); ++i)
+        settings.setValue(QString("panel%1").arg(i), to_string(panels_[i]->view()));
     const InspectionRequest request = controls_->request();
     settings.setValue("method", QString::fromStdString(request.method));
     settings.setValue("resolution", request.resolution);

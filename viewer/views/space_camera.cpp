@@ -21,7 +21,9 @@ glm::dvec3 perpendicular(const glm::dvec3& axis, const glm::dvec3& wanted) {
     const glm::dvec3 across = wanted - glm::dot(wanted, axis) * axis;
     if (glm::length(across) > 1e-3) return glm::normalize(across);
     const glm::dvec3 a = glm::abs(axis);
-    const glm::dvec3 fixed = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0) : a.y <= a.z ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    const glm::dvec3 fixed = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0)
+                             : a.y <= a.z             ? glm::dvec3(0, 1, 0)
+                                                      : glm::dvec3(0, 0, 1);
     return glm::normalize(fixed - glm::dot(fixed, axis) * axis);
 }
 
@@ -54,8 +56,8 @@ void look_orthographic(vtkRenderer* renderer, const Aabb& framed, const glm::dve
 void look_oblique(vtkRenderer* renderer, const Aabb& framed, ViewKind view, const SpaceFrame& frame) {
     // The camera's right: across its view and its image's up (an axis when it looks straight down).
     const glm::dvec3 right = glm::cross(frame.view, perpendicular(frame.view, glm::dvec3(0.0, 1.0, 0.0)));
-    glm::dvec3 direction = view == ViewKind::world ? frame.view + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * right
-                                                   : glm::dvec3(0.25, 0.35, 1.0);
+    glm::dvec3 direction =
+        view == ViewKind::world ? frame.view + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * right : glm::dvec3(0.25, 0.35, 1.0);
     direction = glm::normalize(direction);
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->ParallelProjectionOff();
@@ -69,7 +71,7 @@ void look_oblique(vtkRenderer* renderer, const Aabb& framed, ViewKind view, cons
 }  // namespace
 
 void place_space_camera(vtkRenderer* renderer, const SpaceFrame& frame, SpacePreset preset, ViewKind view) {
-    const Aabb& framed = frame.clip;  // all that is drawn: nothing runs out of the picture
+    const Aabb& framed = frame.clip;                    // all that is drawn: nothing runs out of the picture
     if (frame.atlas) preset = SpacePreset::from_light;  // the texture's own picture (space_frame.cpp)
     switch (preset) {
         case SpacePreset::orbit: look_oblique(renderer, framed, view, frame); break;

@@ -86,14 +86,10 @@ std::optional<SpacePreset> space_preset_named(const std::string& name) {
 std::string map_name(const ShadowSetup& setup, size_t i) {
     static const char* const kFaces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
     switch (setup.selection.rule) {
-        case MapSelection::Rule::view_depth:
-            return "cascade " + std::to_string(i + 1);
-        case MapSelection::Rule::hemisphere:
-            return i == 0 ? "front" : "back";
-        case MapSelection::Rule::cube_face:
-            return std::string("face ") + kFaces[setup.maps[i].cube_face % 6];
-        default:
-            return "map " + std::to_string(i + 1);
+        case MapSelection::Rule::view_depth: return "cascade " + std::to_string(i + 1);
+        case MapSelection::Rule::hemisphere: return i == 0 ? "front" : "back";
+        case MapSelection::Rule::cube_face: return std::string("face ") + kFaces[setup.maps[i].cube_face % 6];
+        default: return "map " + std::to_string(i + 1);
     }
 }
 
