@@ -20,12 +20,14 @@ std::string csv_field(const std::string& text) {
 
 void write_csv_row(std::ofstream& csv, const std::string& scene, const Measurement& m) {
     const ShadowError& e = m.error;
-    csv << csv_field(scene) << ',' << m.method << ',' << m.resolution << ',' << e.misclassified << ','
-        << e.false_shadow << ',' << e.false_light << ',' << e.m.max << ',' << e.m.mean << ',' << e.m.p95 << ','
-        << e.m_perspective.max << ',' << e.m_perspective.mean << ',' << e.m_perspective.p95 << ',' << m.setup_ms << ',' << m.raster_ms << ',' << m.setup_ms + m.raster_ms << ','
-        << csv_field(describe(m.notes())) << ',';
-    if (m.geometry) csv << m.geometry->polygons << ',' << m.geometry->fill_mean << ',' << m.geometry->fill_max;
-    else csv << ",,";
+    csv << csv_field(scene) << ',' << m.method << ',' << m.resolution << ',' << e.misclassified << ',' << e.false_shadow
+        << ',' << e.false_light << ',' << e.m.max << ',' << e.m.mean << ',' << e.m.p95 << ',' << e.m_perspective.max
+        << ',' << e.m_perspective.mean << ',' << e.m_perspective.p95 << ',' << m.setup_ms << ',' << m.raster_ms << ','
+        << m.setup_ms + m.raster_ms << ',' << csv_field(describe(m.notes())) << ',';
+    if (m.geometry)
+        csv << m.geometry->polygons << ',' << m.geometry->fill_mean << ',' << m.geometry->fill_max;
+    else
+        csv << ",,";
     csv << '\n';
 }
 
@@ -53,16 +55,28 @@ ChartSpec against_cost(ChartSpec chart, const Runs& runs, Value&& value) {
 
 // The misclassified share of every method and technique.
 ChartSpec error_against_cost(const Runs& runs) {
-    return against_cost({"Speed-accuracy trade: error against cost", "cost per frame: setup + rasterization (ms)",
-                         "misclassified receiver pixels (%)", true, false, 900, 600, {}},
+    return against_cost({"Speed-accuracy trade: error against cost",
+                         "cost per frame: setup + rasterization (ms)",
+                         "misclassified receiver pixels (%)",
+                         true,
+                         false,
+                         900,
+                         600,
+                         {}},
                         runs, [](const Measurement& m) { return std::optional(100.0 * m.error.misclassified); });
 }
 
 // Max perspective m of the map methods. The perspective factor, not m: m's max is set by faces
 // edge-on to the light, which no parameterization can help. Techniques have no texels and no line.
 ChartSpec aliasing_against_cost(const Runs& runs) {
-    return against_cost({"Perspective aliasing against cost", "cost per frame: setup + rasterization (ms)",
-                         "max perspective m (texel width in pixels)", true, true, 900, 600, {}},
+    return against_cost({"Perspective aliasing against cost",
+                         "cost per frame: setup + rasterization (ms)",
+                         "max perspective m (texel width in pixels)",
+                         true,
+                         true,
+                         900,
+                         600,
+                         {}},
                         runs, [](const Measurement& m) {
                             return m.geometry ? std::nullopt : std::optional(m.error.m_perspective.max);
                         });
@@ -91,9 +105,9 @@ void run_bench(const BenchOptions& o) {
         const std::string scene_name = std::filesystem::path(scene_file).stem().string();
         for (const Method* method : methods) {
             const Settings settings = resolve_settings(method->name, method->settings, {});
-            auto& series = runs.emplace_back(o.scene_files.size() > 1 ? method->name + " (" + scene_name + ")"
-                                                                      : method->name,
-                                             std::vector<Measurement>{});
+            auto& series =
+                runs.emplace_back(o.scene_files.size() > 1 ? method->name + " (" + scene_name + ")" : method->name,
+                                  std::vector<Measurement>{});
             for (int resolution : resolutions_of(method)) {
                 std::cerr << "bench: [" << ++done << "/" << total << "] " << scene_name << " " << method->name;
                 if (method->makes_maps()) std::cerr << " " << resolution << "^2";

@@ -34,26 +34,33 @@ std::string format_value(const TraceValue& value, const std::string& indent) {
 }
 
 std::string describe(const NamedGeometry& g) {
-    return std::visit([](const auto& s) -> std::string {
-        using T = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<T, PointSet>) return std::to_string(s.points.size()) + " points";
-        else if constexpr (std::is_same_v<T, Aabb>)
-            return "box" + format_value(s.min, "") + " .." + format_value(s.max, "");
-        else if constexpr (std::is_same_v<T, ConvexPolyhedron>)
-            return "convex polyhedron, " + std::to_string(s.vertices.size()) + " vertices, " +
-                   std::to_string(s.faces.size()) + " faces";
-        else if constexpr (std::is_same_v<T, SegmentSet>) return std::to_string(s.segments.size()) + " segments";
-        else if constexpr (std::is_same_v<T, PolygonSet>) {
-            size_t at_infinity = 0;
-            for (const glm::dvec4& v : s.vertices) at_infinity += v.w == 0.0;
-            return std::to_string(s.polygons.size()) + " polygons, " + std::to_string(at_infinity) + " of " +
-                   std::to_string(s.vertices.size()) + " vertices at infinity (w = 0)";
-        }
-        else if constexpr (std::is_same_v<T, Arrow>) return "arrow" + format_value(s.from, "") + " ->" + format_value(s.to, "");
-        else if constexpr (std::is_same_v<T, AngleArc>) return "angle at" + format_value(s.centre, "");
-        else if constexpr (std::is_same_v<T, Label>) return "label \"" + s.text + "\" at" + format_value(s.at, "");
-        else return "frustum (8 corners)";
-    }, g.geometry);
+    return std::visit(
+        [](const auto& s) -> std::string {
+            using T = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<T, PointSet>)
+                return std::to_string(s.points.size()) + " points";
+            else if constexpr (std::is_same_v<T, Aabb>)
+                return "box" + format_value(s.min, "") + " .." + format_value(s.max, "");
+            else if constexpr (std::is_same_v<T, ConvexPolyhedron>)
+                return "convex polyhedron, " + std::to_string(s.vertices.size()) + " vertices, " +
+                       std::to_string(s.faces.size()) + " faces";
+            else if constexpr (std::is_same_v<T, SegmentSet>)
+                return std::to_string(s.segments.size()) + " segments";
+            else if constexpr (std::is_same_v<T, PolygonSet>) {
+                size_t at_infinity = 0;
+                for (const glm::dvec4& v : s.vertices) at_infinity += v.w == 0.0;
+                return std::to_string(s.polygons.size()) + " polygons, " + std::to_string(at_infinity) + " of " +
+                       std::to_string(s.vertices.size()) + " vertices at infinity (w = 0)";
+            } else if constexpr (std::is_same_v<T, Arrow>)
+                return "arrow" + format_value(s.from, "") + " ->" + format_value(s.to, "");
+            else if constexpr (std::is_same_v<T, AngleArc>)
+                return "angle at" + format_value(s.centre, "");
+            else if constexpr (std::is_same_v<T, Label>)
+                return "label \"" + s.text + "\" at" + format_value(s.at, "");
+            else
+                return "frustum (8 corners)";
+        },
+        g.geometry);
 }
 
 void print_header(const std::string& scene_file, const std::string& name, const std::string& title,
@@ -62,8 +69,9 @@ void print_header(const std::string& scene_file, const std::string& name, const 
               << "method:   " << name << " (" << title << ")\n";
     std::cout << "settings:";
     for (const auto& [key, value] : settings.values())
-        std::cout << " " << key << "=" << (std::holds_alternative<double>(value)
-                                               ? Json(std::get<double>(value)).dump() : std::get<std::string>(value));
+        std::cout << " " << key << "="
+                  << (std::holds_alternative<double>(value) ? Json(std::get<double>(value)).dump()
+                                                            : std::get<std::string>(value));
     std::cout << (settings.values().empty() ? " none\n" : "\n");
 }
 
@@ -72,7 +80,8 @@ void print_steps(const Trace& trace) {
     for (const Step& s : trace.steps()) {
         std::cout << "  " << ++n << ". " << s.title << "  [" << s.id << ", " << to_string(s.space) << " space]\n"
                   << "     " << s.explanation << "\n";
-        for (const NamedValue& v : s.values) std::cout << "     " << v.name << ":" << format_value(v.value, "     ") << "\n";
+        for (const NamedValue& v : s.values)
+            std::cout << "     " << v.name << ":" << format_value(v.value, "     ") << "\n";
         for (const NamedGeometry& g : s.geometry) std::cout << "     " << g.name << ": " << describe(g) << "\n";
     }
 }
@@ -81,12 +90,15 @@ void print_map(size_t i, const ShadowMap& map) {
     const std::string name = "\nmap " + std::to_string(i);
     if (map.projection == Projection::paraboloid)
         std::cout << name << " paraboloid: centre" << format_value(map.paraboloid.centre, "") << ", near "
-                  << map.paraboloid.near << ", far " << map.paraboloid.far << "; frame_from_world (rows):"
-                  << format_value(glm::dmat4(map.paraboloid.frame_from_world), "");
+                  << map.paraboloid.near << ", far " << map.paraboloid.far
+                  << "; frame_from_world (rows):" << format_value(glm::dmat4(map.paraboloid.frame_from_world), "");
     else
-        std::cout << name << (map.projection == Projection::cube_face ? " (cube face " + std::to_string(map.cube_face) + ")" : "")
+        std::cout << name
+                  << (map.projection == Projection::cube_face ? " (cube face " + std::to_string(map.cube_face) + ")"
+                                                              : "")
                   << " world_to_uvz (rows):" << format_value(map.world_to_uvz, "");
-    if (map.viewport != glm::dvec4(0.0, 0.0, 1.0, 1.0)) std::cout << name << " tile (u0, v0, u1, v1):" << format_value(map.viewport, "");
+    if (map.viewport != glm::dvec4(0.0, 0.0, 1.0, 1.0))
+        std::cout << name << " tile (u0, v0, u1, v1):" << format_value(map.viewport, "");
     std::cout << name << " z_bias_scale: " << map.z_bias_scale << "\n";
 }
 
@@ -110,7 +122,8 @@ void inspect_map(const InspectOptions& options, const Method& method, const Sett
               << " caster boxes\n"
               << "fallback: " << (setup.fallbacks.empty() ? "none" : describe(setup.fallbacks)) << "\n\nsteps:\n";
     print_steps(trace);
-    if (setup.maps.size() > 1) std::cout << "\nmaps: " << setup.maps.size() << ", chosen " << to_string(setup.selection.rule) << "\n";
+    if (setup.maps.size() > 1)
+        std::cout << "\nmaps: " << setup.maps.size() << ", chosen " << to_string(setup.selection.rule) << "\n";
     for (size_t i = 0; i < setup.maps.size(); ++i) print_map(i, setup.maps[i]);
 }
 

@@ -29,7 +29,9 @@ bool has_space(const Inspection& in, Space space) { return static_cast<bool>(in.
 ViewKind view_of(const Inspection& in, Space space) {
     if (space == Space::world || space == Space::view) return ViewKind::world;
     if (space == Space::ppls || space == Space::unit)
-        return has_space(in, Space::ppls) ? ViewKind::ppls : has_space(in, Space::light) ? ViewKind::light : ViewKind::world;
+        return has_space(in, Space::ppls)    ? ViewKind::ppls
+               : has_space(in, Space::light) ? ViewKind::light
+                                             : ViewKind::world;
     return has_space(in, Space::light) ? ViewKind::light : ViewKind::world;
 }
 
@@ -47,7 +49,8 @@ std::vector<Picture> pictures_of(const Inspection& in, size_t i) {
                 return view_of(in, earlier.space) == ViewKind::ppls;
             });
         if (warp_applied) out.push_back({ViewKind::light, SpacePreset::side, "before the warp: Light space, side"});
-        out.push_back({view, SpacePreset::side, std::string(warp_applied ? "after the warp: " : "") + view_title(view) + ", side"});
+        out.push_back({view, SpacePreset::side,
+                       std::string(warp_applied ? "after the warp: " : "") + view_title(view) + ", side"});
         out.push_back({view, SpacePreset::from_light, std::string(view_title(view)) + ", from the light"});
     }
     if (i + 1 == steps.size()) {
@@ -115,13 +118,14 @@ figcaption { font-size: 90%; color: #555; }
 </style>)";
 
 std::string page_head(const Inspection& in, const LessonOptions& o, MatrixLayout layout) {
-    return "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + html_escaped(in.title()) + " step by step</title>" +
-           kStyle + "</head><body>\n<h1>" + html_escaped(in.title()) + " step by step</h1>\n<p>" +
-           html_escaped(in.method->description) + "</p>\n<p>Scene <code>" + html_escaped(o.scene_file) + "</code>, " +
-           (in.has_map() ? std::to_string(in.resolution) + "² map. " : "") + "Matrices in " +
-           layout_note(layout) + "; hover a matrix entry for all its digits.</p>\n" +
-           (in.notes().empty() ? "" : "<p><b>" + std::string(in.has_map() ? "Fallback" : "Limits") + ":</b> " +
-                                          html_escaped(describe(in.notes())) + "</p>\n");
+    return "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + html_escaped(in.title()) +
+           " step by step</title>" + kStyle + "</head><body>\n<h1>" + html_escaped(in.title()) +
+           " step by step</h1>\n<p>" + html_escaped(in.method->description) + "</p>\n<p>Scene <code>" +
+           html_escaped(o.scene_file) + "</code>, " + (in.has_map() ? std::to_string(in.resolution) + "² map. " : "") +
+           "Matrices in " + layout_note(layout) + "; hover a matrix entry for all its digits.</p>\n" +
+           (in.notes().empty() ? ""
+                               : "<p><b>" + std::string(in.has_map() ? "Fallback" : "Limits") + ":</b> " +
+                                     html_escaped(describe(in.notes())) + "</p>\n");
 }
 
 Inspection inspect_for_lesson(const LessonOptions& o) {
@@ -155,8 +159,9 @@ int run_lesson(const LessonOptions& o) {
                 values_table(step, layout) + "\n<div>";
         for (const Picture& p : pictures_of(in, i)) {
             const std::string file = picture_file(i, p);
-            const glm::ivec2 size = looks_through_scene_camera(p.view) ? image_size_within(in.scene.camera, o.width, o.height)
-                                                               : glm::ivec2(o.width, o.height);
+            const glm::ivec2 size = looks_through_scene_camera(p.view)
+                                        ? image_size_within(in.scene.camera, o.width, o.height)
+                                        : glm::ivec2(o.width, o.height);
             write_png(render_view(in, p.view, {.step = step.id, .preset = p.preset}, size.x, size.y),
                       (dir / file).string());
             ++pictures;

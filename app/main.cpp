@@ -99,20 +99,25 @@ int main(int argc, char** argv) {
     measure_cmd->add_option("scene", measure.scene_file, scene_help)->required();
     add_scene_source(measure_cmd, measure.scene_source);
     measure_cmd->add_option("--method,-m", measure.method, method_help)->capture_default_str();
-    measure_cmd->add_option("--resolution,-r", measure.resolution, "shadow map resolution (texels per side)")->capture_default_str();
+    measure_cmd->add_option("--resolution,-r", measure.resolution, "shadow map resolution (texels per side)")
+        ->capture_default_str();
     measure_cmd->add_option("--size", size, "camera image size WxH")->capture_default_str();
-    measure_cmd->add_option("--bias", measure.bias, "depth bias in world units along the light (default: slope-scaled per pixel)");
+    measure_cmd->add_option("--bias", measure.bias,
+                            "depth bias in world units along the light (default: slope-scaled per pixel)");
     measure_cmd->add_option("--set", measure_pairs, "a method setting, key=value (repeatable)");
     measure_cmd->add_flag("--json", measure.json, "print one JSON object");
 
     shadowlab::BenchOptions bench;
     std::string bench_size = "640x360";
-    CLI::App* bench_cmd = app.add_subcommand("bench", "every method at every resolution: a CSV and a plot of error against cost");
+    CLI::App* bench_cmd =
+        app.add_subcommand("bench", "every method at every resolution: a CSV and a plot of error against cost");
     bench_cmd->add_option("scenes", bench.scene_files, "scene files: JSON, glTF (.gltf, .glb) or meshes alone")
         ->required();
     add_scene_source(bench_cmd, bench.scene_source);
     bench_cmd->add_option("--methods", bench.methods, "methods, comma-separated (default: all)")->delimiter(',');
-    bench_cmd->add_option("--resolutions", bench.resolutions, "map resolutions, comma-separated")->delimiter(',')->capture_default_str();
+    bench_cmd->add_option("--resolutions", bench.resolutions, "map resolutions, comma-separated")
+        ->delimiter(',')
+        ->capture_default_str();
     bench_cmd->add_option("--size", bench_size, "camera image size WxH")->capture_default_str();
     bench_cmd->add_option("--out", bench.out_dir, "output directory")->required();
     bench_cmd->add_flag("--filters", bench.filters,
@@ -144,17 +149,22 @@ int main(int argc, char** argv) {
     shadowlab::RenderOptions render;
     std::vector<std::string> render_pairs;
     std::string render_size = "1280x720";
-    CLI::App* render_cmd = app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
+    CLI::App* render_cmd =
+        app.add_subcommand("render", "draw one view to a PNG without showing a window (needs X: xvfb-run)");
     render_cmd->add_option("scene", render.scene_file, scene_help)->required();
     add_scene_source(render_cmd, render.scene_source);
     render_cmd->add_option("--method,-m", render.method, method_help)->capture_default_str();
-    render_cmd->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | texels | error | stencil")->capture_default_str();
+    render_cmd
+        ->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | texels | error | stencil")
+        ->capture_default_str();
     render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
     render_cmd->add_option("--size", render_size, "image size WxH")->capture_default_str();
     render_cmd->add_option("--resolution,-r", render.resolution, "shadow map resolution")->capture_default_str();
-    render_cmd->add_option("--bias", render.bias, "depth bias in world units along the light (default: slope-scaled per pixel)");
-    render_cmd->add_option("--aliasing", render.aliasing,
-                           "the Error view's heat map: total (m) | perspective | projection (its factors)")
+    render_cmd->add_option("--bias", render.bias,
+                           "depth bias in world units along the light (default: slope-scaled per pixel)");
+    render_cmd
+        ->add_option("--aliasing", render.aliasing,
+                     "the Error view's heat map: total (m) | perspective | projection (its factors)")
         ->capture_default_str();
     render_cmd
         ->add_option("--error", render.error,
@@ -171,11 +181,13 @@ int main(int argc, char** argv) {
                            "above the ground (default: the scene's)");
     render_cmd->add_option("--preset", render.preset, "World, Light space and PPLS views: orbit | light | side")
         ->capture_default_str();
-    render_cmd->add_option("--overlay", render.overlay,
-                           "Camera view of a map method: none | cascade (the map serving each surface) | texels "
-                           "(the serving map's texels per pixel)")
+    render_cmd
+        ->add_option("--overlay", render.overlay,
+                     "Camera view of a map method: none | cascade (the map serving each surface) | texels "
+                     "(the serving map's texels per pixel)")
         ->capture_default_str();
-    render_cmd->add_flag("--no-scene-in-ppls{false}", render.scene_in_ppls, "PPLS view: leave the scene's triangles out");
+    render_cmd->add_flag("--no-scene-in-ppls{false}", render.scene_in_ppls,
+                         "PPLS view: leave the scene's triangles out");
     render_cmd->add_option("--set", render_pairs, "a method setting, key=value (repeatable)");
     render_cmd->add_option("--out,-o", render.out, "PNG file to write")->required();
 
@@ -205,19 +217,22 @@ int main(int argc, char** argv) {
     shimmer_cmd->add_option("--path", shimmer.path, "translate (sideways) | rotate (on the spot) | dolly (forward)")
         ->capture_default_str();
     shimmer_cmd->add_option("--frames", shimmer.frames, "frames along the path")->capture_default_str();
-    shimmer_cmd->add_option("--step", shimmer.step,
-                            "per frame: world units (translate, dolly) or degrees (rotate); 0: automatic "
-                            "(0.5 % of the distance to the target, 0.25°)")
+    shimmer_cmd
+        ->add_option("--step", shimmer.step,
+                     "per frame: world units (translate, dolly) or degrees (rotate); 0: automatic "
+                     "(0.5 % of the distance to the target, 0.25°)")
         ->capture_default_str();
     shimmer_cmd->add_option("--resolution,-r", shimmer.resolution, "shadow map resolution")->capture_default_str();
-    shimmer_cmd->add_option("--size", shimmer_size, "camera image size WxH (its visible receiver pixels are the points)")
+    shimmer_cmd
+        ->add_option("--size", shimmer_size, "camera image size WxH (its visible receiver pixels are the points)")
         ->capture_default_str();
     shimmer_cmd->add_option("--out", shimmer.out_dir, "output directory")->required();
 
     shadowlab::InspectorOptions gui;
     gui.scene_file = default_scene();
     std::string gui_size = "1600x1000";
-    CLI::App* gui_cmd = app.add_subcommand("gui", "open the inspector window (the default with no sub-command and an X display)");
+    CLI::App* gui_cmd =
+        app.add_subcommand("gui", "open the inspector window (the default with no sub-command and an X display)");
     gui_cmd->add_option("scene", gui.scene_file, "scene (JSON) or mesh file")->capture_default_str();
     gui_cmd->add_option("--screenshot", gui.screenshot, "write the window to this PNG once drawn, then quit");
     gui_cmd->add_option("--size", gui_size, "window size WxH")->capture_default_str();

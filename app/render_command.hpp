@@ -18,14 +18,16 @@ struct RenderOptions {
     std::string step;  // empty: the method's last step
     int width = 1280, height = 720;
     int resolution = 2048;
-    double bias = -1.0;  // world units along the light; < 0: automatic
+    double bias = -1.0;              // world units along the light; < 0: automatic
     std::string aliasing = "total";  // the Error view's heat map: m, or its perspective or projection factor
     std::string error = "auto";      // the Error view: verdicts, signed visibility error, or auto (signed if soft)
     std::string texture = "depth";   // the Shadow map view: depth, or the moments' mean or deviation (vsm, evsm)
-    std::string light;  // "AZ,EL" in degrees, as the window's Controls panel: the light's new direction; empty: the scene's
+    std::string
+        light;  // "AZ,EL" in degrees, as the window's Controls panel: the light's new direction; empty: the scene's
     std::string preset = "orbit";  // World, Light space, PPLS: how the camera looks (space_preset_named)
     bool scene_in_ppls = true;     // PPLS: draw the scene's triangles
-    std::string overlay = "none";  // Camera view of a map method: none, cascade (each surface's map) or texels (per pixel)
+    std::string overlay =
+        "none";  // Camera view of a map method: none, cascade (each surface's map) or texels (per pixel)
     std::string out;
 };
 

@@ -20,7 +20,8 @@ CameraPath path_or_throw(const ShimmerOptions& o) {
     const auto kind = camera_path_named(o.path);
     if (!kind) throw std::invalid_argument("--path: unknown '" + o.path + "' (one of translate, rotate, dolly)");
     if (o.frames < 2 || o.frames > kMaxFrames)
-        throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " is outside 2.." + std::to_string(kMaxFrames));
+        throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " is outside 2.." +
+                                    std::to_string(kMaxFrames));
     if (!std::isfinite(o.step)) throw std::invalid_argument("--step: not a finite number");
     return {*kind, o.frames, o.step};
 }
@@ -58,9 +59,9 @@ void run_shimmer(const ShimmerOptions& o) {
     write_chart_png(shimmer_chart(shimmer, "Shimmer: " + method.name + ", camera " + to_string(path.kind) + ", " +
                                                std::to_string(o.resolution) + "², " + summary),
                     (dir / "shimmer.png").string());
-    std::cout << "shimmer: " << method.name << ", " << to_string(path.kind) << ", " << path.frames << " frames: "
-              << summary << "\nwrote " << (dir / "shimmer.csv").string() << " and " << (dir / "shimmer.png").string()
-              << "\n";
+    std::cout << "shimmer: " << method.name << ", " << to_string(path.kind) << ", " << path.frames
+              << " frames: " << summary << "\nwrote " << (dir / "shimmer.csv").string() << " and "
+              << (dir / "shimmer.png").string() << "\n";
 }
 
 }  // namespace shadowlab

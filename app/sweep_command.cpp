@@ -42,12 +42,14 @@ struct SweepSeries {
 
 ChartSpec error_against(const SweepSeries& sweep, const std::vector<const Method*>& methods, const std::string& title,
                         const std::string& x_title) {
-    ChartSpec chart{title, x_title, "misclassified receiver pixels (%)   (x: a fallback or a named limit)", true, false,
-                    900, 600, {}};
+    ChartSpec chart{title, x_title, "misclassified receiver pixels (%)   (x: a fallback or a named limit)",
+                    true,  false,   900,
+                    600,   {}};
     for (size_t k = 0; k < methods.size(); ++k) {
         ChartSeries series;
         series.name = methods[k]->name;
-        for (size_t i = 0; i < sweep.values.size(); ++i) add_error_point(series, sweep.values[i], sweep.per_method[k][i]);
+        for (size_t i = 0; i < sweep.values.size(); ++i)
+            add_error_point(series, sweep.values[i], sweep.per_method[k][i]);
         chart.series.push_back(std::move(series));
     }
     return chart;
@@ -153,7 +155,8 @@ void run_sweep(const SweepOptions& o) {
         return s;
     };
     const SweepSeries angles = sweep("angle_deg", kAnglesDeg, [&](double g) { return with_light_angle(base, g); });
-    const SweepSeries ratios = sweep("far_over_near", kFarOverNear, [&](double r) { return with_far_over_near(base, r); });
+    const SweepSeries ratios =
+        sweep("far_over_near", kFarOverNear, [&](double r) { return with_far_over_near(base, r); });
     csv.close();
     std::cout << "wrote " << (dir / "sweep.csv").string() << "\n";
     write_chart_png(error_against(angles, methods, "Error as the light turns parallel to the view",
@@ -161,7 +164,8 @@ void run_sweep(const SweepOptions& o) {
                     (dir / "sweep_angle.png").string());
     write_chart_png(error_against(ratios, methods, "Error against far/near", "far / near"),
                     (dir / "sweep_far_near.png").string());
-    std::cout << "wrote " << (dir / "sweep_angle.png").string() << " and " << (dir / "sweep_far_near.png").string() << "\n";
+    std::cout << "wrote " << (dir / "sweep_angle.png").string() << " and " << (dir / "sweep_far_near.png").string()
+              << "\n";
 }
 
 }  // namespace shadowlab

@@ -65,15 +65,21 @@ const bool registered = [] {
         if (!m.makes_maps()) continue;
         const std::string name = "method_setup/" + m.name;
         benchmark::RegisterBenchmark(name.c_str(), method_setup, &m, std::map<std::string, std::string>{}, false)
-            ->Arg(10)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
-        benchmark::RegisterBenchmark((name + "_traced").c_str(), method_setup, &m, std::map<std::string, std::string>{}, true)
-            ->Arg(1000)->Unit(benchmark::kMicrosecond);
+            ->Arg(10)
+            ->Arg(1000)
+            ->Arg(10000)
+            ->Unit(benchmark::kMicrosecond);
+        benchmark::RegisterBenchmark((name + "_traced").c_str(), method_setup, &m, std::map<std::string, std::string>{},
+                                     true)
+            ->Arg(1000)
+            ->Unit(benchmark::kMicrosecond);
         for (const SettingSpec& spec : m.settings)
             for (const std::string& choice : spec.choices)
                 if (choice != spec.default_value)
                     benchmark::RegisterBenchmark((name + "_" + choice).c_str(), method_setup, &m,
                                                  std::map<std::string, std::string>{{spec.name, choice}}, false)
-                        ->Arg(1000)->Unit(benchmark::kMicrosecond);
+                        ->Arg(1000)
+                        ->Unit(benchmark::kMicrosecond);
     }
     return true;
 }();

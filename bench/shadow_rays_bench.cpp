@@ -52,7 +52,10 @@ void cgal_aabb_tree(benchmark::State& state) {
     using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
     const ShadowRays& rays = default_scene_rays();
     Triangles casters;
-    auto point = [&](int v) { const glm::dvec3& p = rays.triangles.vertices[v]; return K::Point_3(p.x, p.y, p.z); };
+    auto point = [&](int v) {
+        const glm::dvec3& p = rays.triangles.vertices[v];
+        return K::Point_3(p.x, p.y, p.z);
+    };
     for (size_t t = 0; t < rays.triangles.triangles.size(); ++t)
         if (rays.casts[rays.triangles.object[t]]) {
             const auto& tri = rays.triangles.triangles[t];
@@ -63,7 +66,8 @@ void cgal_aabb_tree(benchmark::State& state) {
     const K::Vector_3 direction(rays.to_light.x, rays.to_light.y, rays.to_light.z);
     for (auto _ : state) {
         size_t blocked = 0;
-        for (const glm::dvec3& o : rays.origins) blocked += tree.do_intersect(K::Ray_3(K::Point_3(o.x, o.y, o.z), direction));
+        for (const glm::dvec3& o : rays.origins)
+            blocked += tree.do_intersect(K::Ray_3(K::Point_3(o.x, o.y, o.z), direction));
         benchmark::DoNotOptimize(blocked);
     }
     state.SetItemsProcessed(int64_t(state.iterations() * rays.origins.size()));

@@ -221,7 +221,8 @@ TEST(Cascades, EveryVisibleReceiverPointMapsIntoItsCascadesTile) {
                 EXPECT_LE(depth, selection.split_depths[i + 1]);
                 const double band = selection.blend_band * (selection.split_depths[i + 1] - selection.split_depths[i]);
                 if (i + 1 < int(setup.maps.size()) && depth >= selection.split_depths[i + 1] - band) {
-                    EXPECT_TRUE(in_unit_cube(world_to_uvz(setup.maps[i + 1], p), 1e-6)) << file << " blend into " << i + 1;
+                    EXPECT_TRUE(in_unit_cube(world_to_uvz(setup.maps[i + 1], p), 1e-6))
+                        << file << " blend into " << i + 1;
                 }
             }
         }
@@ -275,8 +276,11 @@ TEST(Cascades, ASpotLightTakesTheFocusedMapAsANamedFallback) {
 
 TEST(Cascades, NearerCascadesSpendTheirTexelsOnLessGround) {
     const ShadowSetup setup = cascades(default_inputs());
-    const auto ground_per_u = [](const ShadowMap& map) { return 1.0 / glm::length(glm::dvec3(row(map.world_to_uvz, 0))); };
-    for (size_t i = 1; i < setup.maps.size(); ++i) EXPECT_LT(ground_per_u(setup.maps[i - 1]), ground_per_u(setup.maps[i]));
+    const auto ground_per_u = [](const ShadowMap& map) {
+        return 1.0 / glm::length(glm::dvec3(row(map.world_to_uvz, 0)));
+    };
+    for (size_t i = 1; i < setup.maps.size(); ++i)
+        EXPECT_LT(ground_per_u(setup.maps[i - 1]), ground_per_u(setup.maps[i]));
 }
 
 // One output step per map (output-0 ...), and the traced maps are the untraced ones.

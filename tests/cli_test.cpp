@@ -27,7 +27,8 @@ bool notes_of_category(const nlohmann::json& notes, shadowlab::NoteCategory cate
     for (const auto& note : notes) {
         bool known = false;
         for (const shadowlab::NoteInfo& info : shadowlab::all_note_kinds())
-            known |= note["kind"] == info.name && info.category == category && !note["message"].get<std::string>().empty();
+            known |=
+                note["kind"] == info.name && info.category == category && !note["message"].get<std::string>().empty();
         if (!known) return false;
     }
     return true;
@@ -170,7 +171,8 @@ TEST(Cli, MeasurePrintsTheDocumentedObject) {
         EXPECT_GE(j[share].get<double>(), 0.0) << share;
         EXPECT_LE(j[share].get<double>(), 1.0) << share;
     }
-    EXPECT_NEAR(j["misclassified"].get<double>(), j["false_shadow"].get<double>() + j["false_light"].get<double>(), 1e-12);
+    EXPECT_NEAR(j["misclassified"].get<double>(), j["false_shadow"].get<double>() + j["false_light"].get<double>(),
+                1e-12);
     EXPECT_GT(j["m"]["max"].get<double>(), j["m"]["mean"].get<double>());
     EXPECT_GT(j["setup_ms"].get<double>(), 0.0);
     EXPECT_GT(j["raster_ms"].get<double>(), 0.0);
@@ -194,7 +196,8 @@ TEST(Cli, MeasureKeepsTheCamerasAspect) {
         std::ofstream(square) << scene.dump();
     }
     auto measured = [&](const std::string& size) {
-        const CliResult r = run_cli("measure " + square + " --method focused --resolution 512 --size " + size + " --json");
+        const CliResult r =
+            run_cli("measure " + square + " --method focused --resolution 512 --size " + size + " --json");
         EXPECT_EQ(r.exit_code, 0) << r.err;
         return nlohmann::json::parse(r.out);
     };
@@ -303,7 +306,8 @@ TEST(Cli, InspectVolumesListsSilhouetteEdgesAndQuadsAtInfinity) {
     EXPECT_TRUE(j["limits"].empty()) << j["limits"];
     std::map<std::string, nlohmann::json> geometry;
     for (const auto& step : j["steps"])
-        for (const auto& g : step["geometry"]) geometry[step["id"].get<std::string>() + "/" + g["kind"].get<std::string>()] = g;
+        for (const auto& g : step["geometry"])
+            geometry[step["id"].get<std::string>() + "/" + g["kind"].get<std::string>()] = g;
     ASSERT_TRUE(geometry.count("volumes.silhouette/segments"));
     ASSERT_TRUE(geometry.count("volumes.extrusion/polygons"));
     const auto& segments = geometry["volumes.silhouette/segments"]["segments"];

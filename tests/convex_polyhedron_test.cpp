@@ -21,7 +21,8 @@ TEST(ConvexPolyhedron, BoxIsClosedConvexWithItsVolume) {
 }
 
 TEST(ConvexPolyhedron, ClipThroughCentreHalvesTheBox) {
-    const ConvexPolyhedron half = clip(ConvexPolyhedron::box(unit_box), Plane::through({0.5, 0.5, 0.5}, {1, 0, 0}), 1e-12);
+    const ConvexPolyhedron half =
+        clip(ConvexPolyhedron::box(unit_box), Plane::through({0.5, 0.5, 0.5}, {1, 0, 0}), 1e-12);
     EXPECT_TRUE(is_closed(half));
     EXPECT_TRUE(is_convex(half, 1e-12));
     EXPECT_NEAR(half.volume(), 0.5, 1e-12);
@@ -30,7 +31,8 @@ TEST(ConvexPolyhedron, ClipThroughCentreHalvesTheBox) {
 
 TEST(ConvexPolyhedron, CornerCutRemovesATetrahedron) {
     // The plane x + y + z = 0.5 cuts off the corner at the origin: a tetrahedron of volume 0.5^3 / 6.
-    const ConvexPolyhedron cut = clip(ConvexPolyhedron::box(unit_box), Plane::through({0.5, 0, 0}, {-1, -1, -1}), 1e-12);
+    const ConvexPolyhedron cut =
+        clip(ConvexPolyhedron::box(unit_box), Plane::through({0.5, 0, 0}, {-1, -1, -1}), 1e-12);
     EXPECT_TRUE(is_closed(cut));
     EXPECT_NEAR(cut.volume(), 1.0 - 0.125 / 6.0, 1e-12);
     EXPECT_EQ(cut.faces.size(), 7u);
@@ -47,9 +49,9 @@ TEST(ConvexPolyhedron, ClipThroughAVertexAndAnEdgeStaysClosed) {
 
 TEST(ConvexPolyhedron, PlaneMissingOrContainingTheBox) {
     const ConvexPolyhedron box = ConvexPolyhedron::box(unit_box);
-    EXPECT_TRUE(clip(box, Plane::through({2, 0, 0}, {-1, 0, 0}), 1e-12).empty());        // all outside
+    EXPECT_TRUE(clip(box, Plane::through({2, 0, 0}, {-1, 0, 0}), 1e-12).empty());              // all outside
     EXPECT_NEAR(clip(box, Plane::through({2, 0, 0}, {1, 0, 0}), 1e-12).volume(), 1.0, 1e-15);  // all inside
-    EXPECT_TRUE(clip(box, Plane::through({1, 0, 0}, {-1, 0, 0}), 1e-12).empty());        // touching a face
+    EXPECT_TRUE(clip(box, Plane::through({1, 0, 0}, {-1, 0, 0}), 1e-12).empty());              // touching a face
 }
 
 TEST(ConvexPolyhedron, RandomCutsKeepClosedConvexAndShrinkingVolume) {

@@ -24,7 +24,8 @@ TEST(FuzzFindings, EyeAtTheHeightOfAFlatGroundUnderAnOverheadLightGivesFiniteMap
     scene.light.direction = {0.0, -1.0, 0.0};
     const ShadowInputs inputs = gather_inputs(scene);
     for (const Method* method : map_methods()) {
-        const ShadowSetup setup = method->compute_maps(inputs, resolve_settings(method->name, method->settings, {}), nullptr);
+        const ShadowSetup setup =
+            method->compute_maps(inputs, resolve_settings(method->name, method->settings, {}), nullptr);
         ASSERT_FALSE(setup.maps.empty()) << method->name;
         EXPECT_TRUE(finite(setup.maps[0].world_to_uvz)) << method->name;
         EXPECT_TRUE(std::isfinite(setup.maps[0].z_bias_scale)) << method->name;

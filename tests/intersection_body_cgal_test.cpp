@@ -19,8 +19,8 @@ Plane plane_through(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& 
 }
 
 // A perspective frustum with corners and outward planes (near, far, left, right, bottom, top).
-Frustum make_frustum(glm::dvec3 eye, glm::dvec3 dir, glm::dvec3 up, double fov_y_deg, double aspect,
-                     double near, double far) {
+Frustum make_frustum(glm::dvec3 eye, glm::dvec3 dir, glm::dvec3 up, double fov_y_deg, double aspect, double near,
+                     double far) {
     dir = glm::normalize(dir);
     const glm::dvec3 right = glm::normalize(glm::cross(dir, up));
     const glm::dvec3 image_up = glm::cross(right, dir);
@@ -34,8 +34,8 @@ Frustum make_frustum(glm::dvec3 eye, glm::dvec3 dir, glm::dvec3 up, double fov_y
     const glm::dvec3 mid = eye + 0.5 * (near + far) * dir;
     const auto& c = f.corners;
     f.planes = {plane_through(c[0], c[1], c[2], mid), plane_through(c[4], c[5], c[6], mid),
-                plane_through(eye, c[0], c[3], mid), plane_through(eye, c[1], c[2], mid),
-                plane_through(eye, c[0], c[1], mid), plane_through(eye, c[2], c[3], mid)};
+                plane_through(eye, c[0], c[3], mid),  plane_through(eye, c[1], c[2], mid),
+                plane_through(eye, c[0], c[1], mid),  plane_through(eye, c[2], c[3], mid)};
     return f;
 }
 
@@ -72,7 +72,7 @@ void expect_valid(const IntersectionBody& r, const BodyInput& in) {
     EXPECT_TRUE(is_convex(r.body, tol));
     EXPECT_TRUE(planes_sound(r.visible, tol));
     EXPECT_TRUE(planes_sound(r.body, tol));
-    EXPECT_TRUE(inside(r.visible, r.body, tol));  // V ⊂ B
+    EXPECT_TRUE(inside(r.visible, r.body, tol));                                                // V ⊂ B
     for (const glm::dvec3& v : r.body.vertices) EXPECT_TRUE(in.scene_bounds.contains(v, tol));  // B ⊂ S
     for (const glm::dvec3& v : r.visible.vertices) EXPECT_TRUE(in.frustum.contains(v, tol));    // V ⊂ F
     EXPECT_GT(r.visible.volume(), 0.0);
@@ -131,7 +131,10 @@ TEST(BodyCgal, FrustumInsideSceneHasClosedFormVolumes) {
     const Frustum f = make_frustum({0, 0, 5}, {0, 0, -1}, {0, 1, 0}, fov, aspect, near, far);
     const double a1 = section(near, fov, aspect), a2 = section(far, fov, aspect);
     const double v = (far - near) / 3.0 * (a1 + a2 + std::sqrt(a1 * a2));
-    struct Case { glm::dvec4 light; double body; };
+    struct Case {
+        glm::dvec4 light;
+        double body;
+    };
     const Case cases[] = {
         {{0, 0, 1, 0}, a2 * 13.0},        // light behind the camera: far rectangle swept to z = 10
         {{0, 0, -1, 0}, v + a2 * 7.0},    // light in front: V plus the far rectangle swept to z = -10
@@ -173,8 +176,7 @@ TEST(BodyCgal, FrustumMissingSceneIsEmpty) {
     // Contact without volume: the far plane on S's top face, the frustum above it.
     const Frustum touching = make_frustum({0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 60, 1.0, 0.1, 4.0);
     for (const Frustum& f : {away, short_of, beside, touching})
-        for (bool exact : {false, true})
-            expect_empty(intersection_body_cgal({f, s, {0, 1, 0, 0}}, exact));
+        for (bool exact : {false, true}) expect_empty(intersection_body_cgal({f, s, {0, 1, 0, 0}}, exact));
 }
 
 TEST(BodyCgal, DegenerateInputs) {
@@ -198,8 +200,8 @@ TEST(BodyCgal, DegenerateInputs) {
         // is a vertex of V, and near S's face.
         const glm::dvec4 lights[] = {{0, 0, 0, 1}, {0, 0, 2.9, 1}, {3, 3, 3, 1}, {-3, -3, -3, 1}, {0.1, 2.5, -1, 1}};
         for (const glm::dvec4& light : lights) {
-            SCOPED_TRACE(testing::Message() << "light " << light.x << ' ' << light.y << ' ' << light.z
-                                            << (exact ? " epeck" : " epick"));
+            SCOPED_TRACE(testing::Message()
+                         << "light " << light.x << ' ' << light.y << ' ' << light.z << (exact ? " epeck" : " epick"));
             const BodyInput in{f, s, light};
             const IntersectionBody r = intersection_body_cgal(in, exact);
             expect_valid(r, in);

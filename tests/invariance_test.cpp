@@ -122,12 +122,12 @@ TEST_P(Invariance, MovedAndScaledSceneKeepsItsVerdicts) {
 std::string configuration_name(const ::testing::TestParamInfo<Invariance::ParamType>& info) {
     const auto [light, scale, offset] = info.param;
     const int decade = int(std::lround(std::log10(scale)));
-    return std::string(to_string(light)) + "_scale_1e" + (decade < 0 ? "minus" : "") + std::to_string(std::abs(decade)) +
+    return std::string(to_string(light)) + "_scale_1e" + (decade < 0 ? "minus" : "") +
+           std::to_string(std::abs(decade)) +
            (offset > 0.0 ? "_offset_1e" + std::to_string(int(std::lround(std::log10(offset)))) : "_at_origin");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Invariance,
                          ::testing::Combine(::testing::Values(LightType::directional, LightType::point),
-                                            ::testing::Values(1e-3, 1.0, 1e4),
-                                            ::testing::Values(0.0, 1e3, 1e6, 1e7)),
+                                            ::testing::Values(1e-3, 1.0, 1e4), ::testing::Values(0.0, 1e3, 1e6, 1e7)),
                          configuration_name);

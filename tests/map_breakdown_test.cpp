@@ -42,10 +42,10 @@ Judged all_agreeing() {
 
 TEST(MapBreakdown, CountsEachMapsPixelsErrorsAndAliasing) {
     Judged j = all_agreeing();
-    j.error.verdicts[0 * kWidth + 0] = PixelVerdict::false_shadow;   // map 0, far from the seam (x = 0)
-    j.error.verdicts[1 * kWidth + 11] = PixelVerdict::false_light;   // map 1, far from it (x = 11)
-    j.error.verdicts[2 * kWidth + 6] = PixelVerdict::false_light;    // map 1, 2 pixels from the boundary (x = 5)
-    j.error.verdicts[3 * kWidth + 4] = PixelVerdict::none;           // not a receiver
+    j.error.verdicts[0 * kWidth + 0] = PixelVerdict::false_shadow;  // map 0, far from the seam (x = 0)
+    j.error.verdicts[1 * kWidth + 11] = PixelVerdict::false_light;  // map 1, far from it (x = 11)
+    j.error.verdicts[2 * kWidth + 6] = PixelVerdict::false_light;   // map 1, 2 pixels from the boundary (x = 5)
+    j.error.verdicts[3 * kWidth + 4] = PixelVerdict::none;          // not a receiver
     const MapBreakdown b = break_down_by_map(j.reference, j.error, two_maps_split_at_depth_5());
     ASSERT_EQ(b.maps.size(), 2u);
     EXPECT_EQ(b.maps[0].pixels, 5u * kHeight - 1);

@@ -65,7 +65,9 @@ TEST(MapLookup, OneLinearMapIsTheMatrixDividedByW) {
 
 TEST(MapLookup, ViewDepthPicksTheSplitAndTheLastSplitIsClosed) {
     ShadowSetup setup{.maps = {overhead({0, 0, 0.5, 0.5}), overhead({0.5, 0, 1, 0.5})}};
-    setup.selection = {.rule = MapSelection::Rule::view_depth, .eye = {0, 0, 4}, .view_axis = {0, 0, -1},
+    setup.selection = {.rule = MapSelection::Rule::view_depth,
+                       .eye = {0, 0, 4},
+                       .view_axis = {0, 0, -1},
                        .split_depths = {0.0, 3.0, 8.0}};
     EXPECT_EQ(select_map(setup, {0, 0, 3.5}), 0);   // depth 0.5
     EXPECT_EQ(select_map(setup, {0, 0, 1.0}), 1);   // depth 3: the second split's start
@@ -179,8 +181,11 @@ namespace {
 // 2) serves x in [-1.5, 1.5), the coarse map 1 (h = 8) x in [1.5, 10].
 ShadowSetup fine_then_coarse(double blend_band) {
     ShadowSetup setup{.maps = {overhead({0, 0, 0.5, 0.5}, 2.0), overhead({0.5, 0, 1, 0.5}, 8.0)}};
-    setup.selection = {.rule = MapSelection::Rule::view_depth, .eye = {0, 0, 0}, .view_axis = {1, 0, 0},
-                       .split_depths = {-1.5, 1.5, 10.0}, .blend_band = blend_band};
+    setup.selection = {.rule = MapSelection::Rule::view_depth,
+                       .eye = {0, 0, 0},
+                       .view_axis = {1, 0, 0},
+                       .split_depths = {-1.5, 1.5, 10.0},
+                       .blend_band = blend_band};
     return setup;
 }
 

@@ -23,8 +23,9 @@ std::vector<double> numbers_between(const std::string& text, const std::string& 
 
 ShadowSetup lispsm_setup() {
     const Method& method = *find_method("lispsm");
-    return method.compute_maps(gather_inputs(load_scene(shadowlab::testing::source_path("data/scenes/box_on_plane.json"))),
-                          resolve_settings(method.name, method.settings, {}), nullptr);
+    return method.compute_maps(
+        gather_inputs(load_scene(shadowlab::testing::source_path("data/scenes/box_on_plane.json"))),
+        resolve_settings(method.name, method.settings, {}), nullptr);
 }
 
 }  // namespace

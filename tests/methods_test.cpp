@@ -23,9 +23,9 @@ void expect_receivers_in_unit_cube(const ShadowInputs& in, const ShadowSetup& se
         if (!in.frustum.contains(p, -tol)) continue;
         ++checked;
         const std::optional<glm::dvec3> uvz = setup_uvz(setup, p);
-        ASSERT_TRUE(uvz && in_unit_cube(*uvz, 1e-6)) << what << ": receiver point maps to ("
-                                                     << (uvz ? uvz->x : NAN) << ", " << (uvz ? uvz->y : NAN) << ", "
-                                                     << (uvz ? uvz->z : NAN) << ")";
+        ASSERT_TRUE(uvz && in_unit_cube(*uvz, 1e-6))
+            << what << ": receiver point maps to (" << (uvz ? uvz->x : NAN) << ", " << (uvz ? uvz->y : NAN) << ", "
+            << (uvz ? uvz->z : NAN) << ")";
     }
     (void)checked;
 }
@@ -56,9 +56,9 @@ TEST_P(MethodOnScene, ShadowableVisiblePointsMapIntoTheUnitCube) {
     const std::vector<glm::dvec3> points = shadowable_visible_points(in);
     for (const glm::dvec3& p : points) {
         const std::optional<glm::dvec3> uvz = setup_uvz(setup, p);
-        ASSERT_TRUE(uvz && in_unit_cube(*uvz, 1e-6)) << method_name << " on " << file << ": ("
-                                                     << (uvz ? uvz->x : NAN) << ", " << (uvz ? uvz->y : NAN) << ", "
-                                                     << (uvz ? uvz->z : NAN) << ")";
+        ASSERT_TRUE(uvz && in_unit_cube(*uvz, 1e-6))
+            << method_name << " on " << file << ": (" << (uvz ? uvz->x : NAN) << ", " << (uvz ? uvz->y : NAN) << ", "
+            << (uvz ? uvz->z : NAN) << ")";
     }
 }
 
@@ -73,7 +73,7 @@ TEST_P(MethodOnScene, DepthGrowsAlongEachLightRay) {
         const glm::dvec3 ray = in.light.is_directional() ? in.light.direction : glm::normalize(p - in.light.position);
         const std::optional<MapPoint> at = map_point(setup, p);
         if (!at || !in_unit_cube(at->uvz(), 0.0)) continue;  // behind a point light, outside a spot's cone: not mapped
-        const ShadowMap& map = setup.maps[at->map];  // the same map along the ray: its depths are ordered
+        const ShadowMap& map = setup.maps[at->map];          // the same map along the ray: its depths are ordered
         const glm::dvec3 a = world_to_uvz(map, p), b = world_to_uvz(map, p + step * ray);
         ASSERT_GT(b.z, a.z) << method_name << " on " << file;
         EXPECT_NEAR(a.x, b.x, 1e-9 + 1e-9 * std::abs(a.x));
@@ -109,7 +109,8 @@ TEST_P(MethodOnScene, TraceFramesPutTheSceneInTheMethodsSpaces) {
     if (!in.light.is_directional() || !affine) return;
     const double step = 1e-2 * in.scene_bounds.diagonal();
     for (const glm::dvec3& p : in.receiver_points()) {
-        const glm::dvec4 a = to_light * glm::dvec4(p, 1.0), b = to_light * glm::dvec4(p + step * in.light.direction, 1.0);
+        const glm::dvec4 a = to_light * glm::dvec4(p, 1.0),
+                         b = to_light * glm::dvec4(p + step * in.light.direction, 1.0);
         EXPECT_NEAR(a.x / a.w, b.x / b.w, 1e-9 * step);
         EXPECT_NEAR(a.y / a.w, b.y / b.w, 1e-9 * step);
         EXPECT_GT(b.z / b.w, a.z / a.w);
@@ -123,13 +124,12 @@ static std::vector<std::tuple<std::string, std::string>> all_pairs() {
     return pairs;
 }
 
-INSTANTIATE_TEST_SUITE_P(ShippedScenes, MethodOnScene, ::testing::ValuesIn(all_pairs()),
-                         [](const auto& info) {
-                             std::string name = std::get<0>(info.param) + "_" +
-                                                std::filesystem::path(std::get<1>(info.param)).stem().string();
-                             for (char& c : name) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(ShippedScenes, MethodOnScene, ::testing::ValuesIn(all_pairs()), [](const auto& info) {
+    std::string name = std::get<0>(info.param) + "_" + std::filesystem::path(std::get<1>(info.param)).stem().string();
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
+});
 
 class BodyOnScene : public ::testing::TestWithParam<std::string> {};
 
@@ -179,8 +179,10 @@ TEST(Focused, IsTighterThanUniformWhenTheViewSeesPartOfTheScene) {
     const glm::dmat4 u = run(*find_method("uniform"), in).maps[0].world_to_uvz;
     const glm::dmat4 f = run(*find_method("focused"), in).maps[0].world_to_uvz;
     // Texels per world unit: the focused map's scale in x and y is larger.
-    const double uniform_scale = glm::length(glm::dvec3(u[0][0], u[1][0], u[2][0])) * glm::length(glm::dvec3(u[0][1], u[1][1], u[2][1]));
-    const double focused_scale = glm::length(glm::dvec3(f[0][0], f[1][0], f[2][0])) * glm::length(glm::dvec3(f[0][1], f[1][1], f[2][1]));
+    const double uniform_scale =
+        glm::length(glm::dvec3(u[0][0], u[1][0], u[2][0])) * glm::length(glm::dvec3(u[0][1], u[1][1], u[2][1]));
+    const double focused_scale =
+        glm::length(glm::dvec3(f[0][0], f[1][0], f[2][0])) * glm::length(glm::dvec3(f[0][1], f[1][1], f[2][1]));
     EXPECT_GT(focused_scale, 4.0 * uniform_scale);
 }
 

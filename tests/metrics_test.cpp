@@ -128,7 +128,8 @@ TEST(Metrics, MisclassificationIsSmallAndSplitByKind) {
 TEST(Metrics, DepthStepOfAnOrthographicMapIsItsDepthRangeOver2To24) {
     const Scene scene = overhead_scene();
     const Method& uniform = *find_method("uniform");
-    const ShadowMap map = uniform.compute_maps(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
+    const ShadowMap map =
+        uniform.compute_maps(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
     // The uniform map's depth spans the scene's height (the box: 4 units) over [0, 1].
     EXPECT_NEAR(world_per_depth_unit(map, scene.light.direction, {10, 0, 10}), 4.0, 1e-9);
     const ShadowError e = measure(scene, "uniform", 256, 81);
@@ -155,7 +156,8 @@ TEST(Metrics, MethodsRankAsTheLiteratureSaysUnderAnOverheadLight) {
 TEST(Metrics, SlopeScaledBiasIsTheTexelSizeTimesOnePlusTanTheta) {
     const Scene scene = overhead_scene();
     const Method& uniform = *find_method("uniform");
-    const ShadowMap map = uniform.compute_maps(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
+    const ShadowMap map =
+        uniform.compute_maps(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
     // A 100-unit map of 500 texels: 0.2 units a texel; the ground faces the light (θ = 0).
     EXPECT_NEAR(slope_scaled_bias(map, 500, scene.light.direction, {10, 0, 10}, 1.0), 0.2, 1e-6);
     // A face at 45° to the light needs twice that.

@@ -9,8 +9,7 @@ namespace shadowlab {
 namespace {
 
 void expect_near(const glm::dvec3& got, const glm::dvec3& expected, double tolerance = 1e-15) {
-    EXPECT_NEAR(glm::length(got - expected), 0.0, tolerance)
-        << "(" << got.x << ", " << got.y << ", " << got.z << ")";
+    EXPECT_NEAR(glm::length(got - expected), 0.0, tolerance) << "(" << got.x << ", " << got.y << ", " << got.z << ")";
 }
 
 TEST(NormalizeSafely, HugeComponentsDoNotOverflow) {
@@ -41,10 +40,8 @@ TEST(NormalizeSafely, CameraUpOfAnySizeGivesTheSameFrame) {
         scaled.up = unit.up * size;
         const glm::dmat4 view = scaled.view_matrix(), expected = unit.view_matrix();
         for (int column = 0; column < 4; ++column)
-            for (int row = 0; row < 4; ++row)
-                EXPECT_NEAR(view[column][row], expected[column][row], 1e-12) << size;
-        for (int i = 0; i < 8; ++i)
-            expect_near(scaled.frustum().corners[i], unit.frustum().corners[i], 1e-12);
+            for (int row = 0; row < 4; ++row) EXPECT_NEAR(view[column][row], expected[column][row], 1e-12) << size;
+        for (int i = 0; i < 8; ++i) expect_near(scaled.frustum().corners[i], unit.frustum().corners[i], 1e-12);
     }
 }
 

@@ -41,11 +41,11 @@ double value(const Trace& trace, const std::string& step, const std::string& nam
 
 TEST(Lispsm, NOptMatchesTheFormula) {
     EXPECT_NEAR(lispsm_n(1.0, 1000.0, 1.0, 0.0), 1.0 + std::sqrt(1000.0), 1e-9);
-    EXPECT_NEAR(lispsm_n(1.0, 1000.0, 1.0, 0.0), 32.62, 0.005);                   // the known value
+    EXPECT_NEAR(lispsm_n(1.0, 1000.0, 1.0, 0.0), 32.62, 0.005);                           // the known value
     EXPECT_NEAR(lispsm_n(1.0, 1000.0, 0.5, 0.0), 2.0 * (1.0 + std::sqrt(1000.0)), 1e-9);  // / sin γ
-    EXPECT_NEAR(lispsm_n(2.0, 50.0, 1.0, 1.0), 2.0, 1e-9);                          // η = 1: PSM's n = z_n
-    EXPECT_TRUE(std::isinf(lispsm_n(1.0, 1000.0, 1.0, -1.0)));                     // η = -1: no warp
-    EXPECT_GT(lispsm_n(1.0, 1000.0, 1.0, -0.5), lispsm_n(1.0, 1000.0, 1.0, 0.0));  // η orders the warp
+    EXPECT_NEAR(lispsm_n(2.0, 50.0, 1.0, 1.0), 2.0, 1e-9);                                // η = 1: PSM's n = z_n
+    EXPECT_TRUE(std::isinf(lispsm_n(1.0, 1000.0, 1.0, -1.0)));                            // η = -1: no warp
+    EXPECT_GT(lispsm_n(1.0, 1000.0, 1.0, -0.5), lispsm_n(1.0, 1000.0, 1.0, 0.0));         // η orders the warp
 }
 
 TEST(Lispsm, WarpFadesSmoothlyToTheFocusedMapAsTheLightTurnsParallel) {
@@ -73,7 +73,8 @@ TEST(Lispsm, WarpFadesSmoothlyToTheFocusedMapAsTheLightTurnsParallel) {
     const glm::dmat4 warped = run("lispsm", gather_inputs(scene)).setup.maps[0].world_to_uvz;
     for (const glm::dvec3& p : in.receiver_points()) {
         if (!in.frustum.contains(p)) continue;
-        const glm::dvec3 a = world_to_uvz(parallel.setup.maps[0], p), b = world_to_uvz(ShadowMap{.world_to_uvz = warped}, p);
+        const glm::dvec3 a = world_to_uvz(parallel.setup.maps[0], p),
+                         b = world_to_uvz(ShadowMap{.world_to_uvz = warped}, p);
         EXPECT_NEAR(glm::length(a - b), 0.0, 1e-3);
     }
 }
@@ -107,7 +108,8 @@ TEST(Xpsm, FocusRegionMapsExactlyOntoTheUnitSquare) {
             return glm::dmat4(1.0);
         }();
         for (int corner = 0; corner < 4; ++corner) {
-            const glm::dvec3 ppls{corner & 1 ? focus.max.x : focus.min.x, corner & 2 ? focus.max.y : focus.min.y, focus.min.z};
+            const glm::dvec3 ppls{corner & 1 ? focus.max.x : focus.min.x, corner & 2 ? focus.max.y : focus.min.y,
+                                  focus.min.z};
             const glm::dvec4 world_h = ppls_to_world * glm::dvec4(ppls, 1.0);
             const glm::dvec3 uvz = world_to_uvz(r.setup.maps[0], glm::dvec3(world_h) / world_h.w);
             EXPECT_NEAR(uvz.x, corner & 1 ? 1.0 : 0.0, 1e-9) << name;

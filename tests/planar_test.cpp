@@ -28,8 +28,7 @@ TEST(Planar, MatrixIsTheSeedsForAPointLight) {
     const glm::dmat4 m = planar_projection_matrix(glm::dvec4(n, d), glm::dvec4(l, 1));
     const glm::dmat4 seed = from_rows({nl + d - n.x * l.x, -n.y * l.x, -n.z * l.x, -d * l.x},
                                       {-n.x * l.y, nl + d - n.y * l.y, -n.z * l.y, -d * l.y},
-                                      {-n.x * l.z, -n.y * l.z, nl + d - n.z * l.z, -d * l.z},
-                                      {-n.x, -n.y, -n.z, nl});
+                                      {-n.x * l.z, -n.y * l.z, nl + d - n.z * l.z, -d * l.z}, {-n.x, -n.y, -n.z, nl});
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) EXPECT_NEAR(m[c][r], seed[c][r], 1e-12) << c << "," << r;
     // A point goes onto the plane, on its line from the light.

@@ -258,8 +258,8 @@ TEST(ReferenceOverheadLight, ShadowIsExactlyTheFloatingBoxFootprint) {
     int inside = 0, outside = 0;
     for (const auto& [i, under_box] : ground_pixels(image, scene.objects[1])) {
         (under_box ? inside : outside) += 1;
-        EXPECT_EQ(image.lit[i], under_box ? 0 : 1) << "ground point " << image.position[i].x << ", "
-                                                    << image.position[i].z;
+        EXPECT_EQ(image.lit[i], under_box ? 0 : 1)
+            << "ground point " << image.position[i].x << ", " << image.position[i].z;
     }
     EXPECT_GT(inside, 200);  // seen under the box, which floats
     EXPECT_GT(outside, 1000);

@@ -187,7 +187,8 @@ TEST(ShadowVolumes, QuadsReachInfinityAndOnlyAPointLightHasABackCap) {
     EXPECT_EQ(point.front_cap.size() + point.back_cap.size(), triangles.triangles.size() - 2);  // all but the ground
     for (const VolumePolygon& q : point.quads)
         EXPECT_NEAR(glm::dot(glm::normalize(glm::dvec3(q.vertices[2])),
-                             glm::normalize(glm::dvec3(q.vertices[1]) - scene.light.position)), 1.0, 1e-12);
+                             glm::normalize(glm::dvec3(q.vertices[1]) - scene.light.position)),
+                    1.0, 1e-12);
 }
 
 TEST(ShadowVolumes, ZPassAndZFailAgreeWhenTheEyeIsOutsideEveryVolume) {
@@ -242,8 +243,8 @@ TEST(ShadowVolumes, OpenAndNonManifoldMeshesAreNamedAndStillShadowRight) {
     fan.name = "fan";
     fan.shape = Shape::mesh;
     fan.position = {3, 2, 0};
-    fan.mesh = std::make_shared<TriangleMesh>(
-        TriangleMesh{{{0, 0, -1}, {0, 0, 1}, {1.5, 0.2, 0}, {-1, 0.8, 0}, {0.2, 1.5, 0.1}}, {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}}});
+    fan.mesh = std::make_shared<TriangleMesh>(TriangleMesh{
+        {{0, 0, -1}, {0, 0, 1}, {1.5, 0.2, 0}, {-1, 0.8, 0}, {0.2, 1.5, 0.1}}, {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}}});
     scene.objects.push_back(sheet);
     scene.objects.push_back(fan);
 
@@ -259,12 +260,14 @@ TEST(ShadowVolumes, OpenAndNonManifoldMeshesAreNamedAndStillShadowRight) {
     const Measurement m = measure_volumes(context, "zfail");
     ASSERT_FALSE(m.limits.empty());
     EXPECT_TRUE(shadowlab::testing::has_note(m.limits, NoteKind::open_mesh)) << describe(m.limits);
-    EXPECT_NE(describe(m.limits).find("'sheet' (4 open, 0 non-manifold edges)"), std::string::npos) << describe(m.limits);
+    EXPECT_NE(describe(m.limits).find("'sheet' (4 open, 0 non-manifold edges)"), std::string::npos)
+        << describe(m.limits);
     EXPECT_NE(describe(m.limits).find("'fan'"), std::string::npos) << describe(m.limits);
     EXPECT_LE(m.error.misclassified, 2e-3) << "two-sided volumes shadow the ground right";
     size_t ground_in_shadow = 0;
     for (size_t i = 0; i < context.reference.lit.size(); ++i)
-        ground_in_shadow += context.reference.visible[i] && context.reference.object[i] == 0 && !context.reference.lit[i];
+        ground_in_shadow +=
+            context.reference.visible[i] && context.reference.object[i] == 0 && !context.reference.lit[i];
     EXPECT_GT(ground_in_shadow, 200u) << "both casters shadow the ground";
 }
 
@@ -290,9 +293,7 @@ TEST(ShadowVolumes, TraceListsTheStepsWithTheirGeometryAndChangesNothing) {
     EXPECT_EQ(at_infinity, 2 * quads.polygons.size());
 }
 
-TEST(ShadowVolumes, BadCountRuleIsRejected) {
-    EXPECT_THROW(count_rule("zmaybe"), std::invalid_argument);
-}
+TEST(ShadowVolumes, BadCountRuleIsRejected) { EXPECT_THROW(count_rule("zmaybe"), std::invalid_argument); }
 
 // The rasterized count against the ray-traced shadows: the z-fail verdicts differ only on a small
 // share of the visible pixels (measured: 12 of 147513 on the default scene, 0.008 %; 4 on volumes;

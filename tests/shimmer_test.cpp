@@ -38,7 +38,8 @@ TEST(CameraPath, MovesAsAPlayerMoves) {
     EXPECT_EQ(turned.position, start.position);
     EXPECT_NEAR(glm::distance(turned.target, start.position), glm::distance(start.target, start.position), 1e-12);
     const auto horizontal = [](const glm::dvec3& v) { return glm::dvec2(v.x, v.z); };  // turned about +y
-    EXPECT_NEAR(glm::dot(horizontal(turned.target - start.position), horizontal(start.target - start.position)), 0.0, 1e-9);
+    EXPECT_NEAR(glm::dot(horizontal(turned.target - start.position), horizontal(start.target - start.position)), 0.0,
+                1e-9);
     EXPECT_NEAR(turned.target.y, start.target.y, 1e-12);
 
     // Automatic steps: 0.5 % of the distance to the target, 0.25° per frame.
@@ -80,7 +81,8 @@ TEST(Shimmer, StabilizedCascadesFlipNoVerdictAlongASidewaysPath) {
     const Method& cascades = method_or_throw("cascades");
     const CameraPath path{CameraPath::Kind::translate, 12, 0.0};
     auto flips = [&](const std::string& stabilize) {
-        const Settings s = resolve_settings("cascades", cascades.settings, {{"fit", "sphere"}, {"stabilize", stabilize}});
+        const Settings s =
+            resolve_settings("cascades", cascades.settings, {{"fit", "sphere"}, {"stabilize", stabilize}});
         return measure_shimmer(c, shimmer_samples(c), cascades, s, 512, -1.0, path);
     };
     const Shimmer stable = flips("on"), sliding = flips("off");

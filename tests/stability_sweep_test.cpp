@@ -28,7 +28,8 @@ struct Configuration {
 glm::dvec3 random_unit(std::mt19937& rng) {
     std::normal_distribution<double> n;
     glm::dvec3 v;
-    do v = {n(rng), n(rng), n(rng)}; while (glm::length(v) < 1e-6);
+    do v = {n(rng), n(rng), n(rng)};
+    while (glm::length(v) < 1e-6);
     return glm::normalize(v);
 }
 
@@ -42,7 +43,8 @@ Configuration random_configuration(int i, std::mt19937& rng) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     Configuration c{{}, {}, size_t(i) % kScales.size(), false};
     const double s = kScales[c.scale_index];
-    c.camera.position = s * glm::dvec3((u(rng) - 0.5) * kTownSize, 0.5 + 30 * u(rng) * u(rng), (u(rng) - 0.5) * kTownSize);
+    c.camera.position =
+        s * glm::dvec3((u(rng) - 0.5) * kTownSize, 0.5 + 30 * u(rng) * u(rng), (u(rng) - 0.5) * kTownSize);
     glm::dvec3 view = random_unit(rng);
     view.y = -std::abs(view.y) * 0.5;  // mostly toward the ground and horizon
     c.camera.target = c.camera.position + s * glm::normalize(view);
@@ -70,7 +72,8 @@ Configuration random_configuration(int i, std::mt19937& rng) {
 // The town at each scale, with and without a tall caster 1e4 units behind the edge camera.
 std::vector<ObjectBox> town_boxes(double scale, bool far_caster) {
     std::vector<ObjectBox> boxes = object_boxes(random_town(150, kTownSize, 11));
-    if (far_caster) boxes.push_back({{{-50, 0, 0.52 * kTownSize + 1e4}, {50, 400, 0.52 * kTownSize + 1e4 + 100}}, true, false});
+    if (far_caster)
+        boxes.push_back({{{-50, 0, 0.52 * kTownSize + 1e4}, {50, 400, 0.52 * kTownSize + 1e4 + 100}}, true, false});
     for (ObjectBox& b : boxes) b.box = {b.box.min * scale, b.box.max * scale};
     return boxes;
 }
@@ -87,8 +90,8 @@ void expect_sound_setup(const Method& method, const ShadowInputs& in, const Shad
     auto expect_covered = [&](const glm::dvec3& p, double tolerance) {
         const std::optional<glm::dvec3> uvz = setup_uvz(setup, p);
         ASSERT_TRUE(uvz && in_unit_cube(*uvz, tolerance))
-            << method.name << " configuration " << i << ": (" << (uvz ? uvz->x : NAN) << ", "
-            << (uvz ? uvz->y : NAN) << ", " << (uvz ? uvz->z : NAN) << ")";
+            << method.name << " configuration " << i << ": (" << (uvz ? uvz->x : NAN) << ", " << (uvz ? uvz->y : NAN)
+            << ", " << (uvz ? uvz->z : NAN) << ")";
     };
     if (method.covers == Coverage::visible_receivers)
         for (const glm::dvec3& p : in.receiver_points())
@@ -101,14 +104,16 @@ void expect_sound_setup(const Method& method, const ShadowInputs& in, const Shad
 
 TEST(StabilitySweep, TenThousandConfigurationsGiveFiniteMapsAndNamedFallbacks) {
     std::array<std::array<std::vector<ObjectBox>, 2>, kScales.size()> boxes;
-    for (size_t k = 0; k < kScales.size(); ++k) boxes[k] = {town_boxes(kScales[k], false), town_boxes(kScales[k], true)};
+    for (size_t k = 0; k < kScales.size(); ++k)
+        boxes[k] = {town_boxes(kScales[k], false), town_boxes(kScales[k], true)};
     std::mt19937 rng(2026);
     std::map<std::string, int> fallbacks;
     for (int i = 0; i < 10000; ++i) {
         const Configuration c = random_configuration(i, rng);
         const ShadowInputs in = gather_inputs(c.camera, c.light, boxes[c.scale_index][c.far_caster]);
         for (const Method* method : map_methods()) {
-            const ShadowSetup setup = method->compute_maps(in, resolve_settings(method->name, method->settings, {}), nullptr);
+            const ShadowSetup setup =
+                method->compute_maps(in, resolve_settings(method->name, method->settings, {}), nullptr);
             expect_sound_setup(*method, in, setup, i, i % 10 == 0);
             if (::testing::Test::HasFatalFailure()) return;
             if (!setup.fallbacks.empty()) ++fallbacks[method->name];

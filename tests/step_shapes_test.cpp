@@ -141,7 +141,9 @@ const T& drawn(const Trace& trace, const std::string& step_id, const std::string
     return std::get<T>(g->geometry);
 }
 
-Trace trace_of(const std::string& method, const std::string& scene) { return trace_of(*find_method(method), shipped(scene)); }
+Trace trace_of(const std::string& method, const std::string& scene) {
+    return trace_of(*find_method(method), shipped(scene));
+}
 
 }  // namespace
 
@@ -193,7 +195,8 @@ TEST(StepShapes, LispsmGammaArcAndNDimensionCarryTheirValues) {
         const double drawn_n = glm::distance(n.segments.at(0).first, n.segments.at(0).second);
         EXPECT_NEAR(drawn_n, value<double>(*trace.find("n-opt"), "n"), 1e-9 * drawn_n) << scene;
         // The dimension ends at C, the warp frustum's centre.
-        EXPECT_LT(glm::distance(n.segments[0].first, value<glm::dvec3>(*trace.find("warp-frustum"), "C")), 1e-9 * drawn_n);
+        EXPECT_LT(glm::distance(n.segments[0].first, value<glm::dvec3>(*trace.find("warp-frustum"), "C")),
+                  1e-9 * drawn_n);
     }
 }
 

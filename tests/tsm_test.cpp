@@ -32,8 +32,8 @@ ShadowInputs town_view(const glm::dvec3& light_direction, const glm::dvec3& targ
 // Views that warp: the town under four suns, and the shipped default scene.
 std::vector<ShadowInputs> warped_views() {
     std::vector<ShadowInputs> views;
-    for (const glm::dvec3& light : {glm::dvec3(-0.3, -1, -0.2), glm::dvec3(1, -0.3, 0.2), glm::dvec3(0.2, -0.5, 1),
-                                    glm::dvec3(0.3, -0.4, -1)})
+    for (const glm::dvec3& light :
+         {glm::dvec3(-0.3, -1, -0.2), glm::dvec3(1, -0.3, 0.2), glm::dvec3(0.2, -0.5, 1), glm::dvec3(0.3, -0.4, -1)})
         views.push_back(town_view(light));
     views.push_back(gather_inputs(load_scene(source_path("data/scenes/default.json"))));
     return views;

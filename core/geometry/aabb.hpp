@@ -11,14 +11,21 @@ struct Aabb {
     glm::dvec3 max{-std::numeric_limits<double>::infinity()};
 
     bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
-    void extend(const glm::dvec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
-    void extend(const Aabb& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
+    void extend(const glm::dvec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void extend(const Aabb& b) {
+        if (!b.empty()) {
+            extend(b.min);
+            extend(b.max);
+        }
+    }
     glm::dvec3 center() const { return 0.5 * (min + max); }
     glm::dvec3 extent() const { return max - min; }
     double diagonal() const { return empty() ? 0.0 : glm::length(max - min); }
     bool contains(const glm::dvec3& p, double tolerance = 0.0) const {
-        return glm::all(glm::greaterThanEqual(p, min - tolerance)) &&
-               glm::all(glm::lessThanEqual(p, max + tolerance));
+        return glm::all(glm::greaterThanEqual(p, min - tolerance)) && glm::all(glm::lessThanEqual(p, max + tolerance));
     }
     bool overlaps(const Aabb& b) const {
         return !empty() && !b.empty() && glm::all(glm::lessThanEqual(min, b.max)) &&
@@ -27,8 +34,7 @@ struct Aabb {
     // Corner i has bit 0 -> x, bit 1 -> y, bit 2 -> z taken from max.
     std::array<glm::dvec3, 8> corners() const {
         std::array<glm::dvec3, 8> c;
-        for (int i = 0; i < 8; ++i)
-            c[i] = {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+        for (int i = 0; i < 8; ++i) c[i] = {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
         return c;
     }
 };

@@ -26,8 +26,8 @@ double ConvexPolyhedron::volume() const {
     double six_volume = 0.0;
     for (const PolyFace& f : faces)
         for (size_t i = 1; i + 1 < f.loop.size(); ++i)
-            six_volume += glm::dot(vertices[f.loop[0]] - o,
-                                   glm::cross(vertices[f.loop[i]] - o, vertices[f.loop[i + 1]] - o));
+            six_volume +=
+                glm::dot(vertices[f.loop[0]] - o, glm::cross(vertices[f.loop[i]] - o, vertices[f.loop[i + 1]] - o));
     return six_volume / 6.0;
 }
 
@@ -53,8 +53,7 @@ namespace {
 enum class Side { inside, on, outside };
 
 // Orders the cap's vertices counter-clockwise around `normal` (seen from outside).
-std::vector<int> sorted_cap(const std::vector<glm::dvec3>& vertices, std::vector<int> cap,
-                            const glm::dvec3& normal) {
+std::vector<int> sorted_cap(const std::vector<glm::dvec3>& vertices, std::vector<int> cap, const glm::dvec3& normal) {
     glm::dvec3 centre{0.0};
     for (int i : cap) centre += vertices[i];
     centre /= double(cap.size());
@@ -96,8 +95,7 @@ ConvexPolyhedron clip(const ConvexPolyhedron& poly, const Plane& plane, double t
     bool any_inside = false, any_outside = false;
     for (size_t i = 0; i < poly.vertices.size(); ++i) {
         distance[i] = plane.signed_distance(poly.vertices[i]);
-        side[i] = distance[i] < -tolerance ? Side::inside
-                  : distance[i] > tolerance ? Side::outside : Side::on;
+        side[i] = distance[i] < -tolerance ? Side::inside : distance[i] > tolerance ? Side::outside : Side::on;
         any_inside |= side[i] == Side::inside;
         any_outside |= side[i] == Side::outside;
     }
@@ -144,8 +142,7 @@ bool is_closed(const ConvexPolyhedron& poly) {
     std::map<std::pair<int, int>, int> directed;
     for (const PolyFace& f : poly.faces) {
         if (f.loop.size() < 3) return false;
-        for (size_t k = 0; k < f.loop.size(); ++k)
-            ++directed[{f.loop[k], f.loop[(k + 1) % f.loop.size()]}];
+        for (size_t k = 0; k < f.loop.size(); ++k) ++directed[{f.loop[k], f.loop[(k + 1) % f.loop.size()]}];
     }
     for (const auto& [edge, count] : directed) {
         auto twin = directed.find({edge.second, edge.first});

@@ -17,7 +17,7 @@ namespace shadowlab {
 // exact constructions kernel. A speed / exactness trade offered to the user.
 enum class BodyKernel { float_clipper, epick, epeck };
 
-const char* to_string(BodyKernel kernel);                      // "float", "epick", "epeck"
+const char* to_string(BodyKernel kernel);  // "float", "epick", "epeck"
 std::optional<BodyKernel> body_kernel_from_string(const std::string& name);
 
 struct BodyInput {

@@ -33,9 +33,10 @@ bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.
 template <class Point>
 bool has_volume(const std::vector<Point>& p) {
     std::size_t i = 1, j;
-    while (i < p.size() && p[i] == p[0]) ++i;                                    // a second point
-    for (j = i + 1; j < p.size() && CGAL::collinear(p[0], p[i], p[j]); ++j) {}  // a third, off their line
-    for (std::size_t k = j + 1; k < p.size(); ++k)                               // a fourth, off their plane
+    while (i < p.size() && p[i] == p[0]) ++i;  // a second point
+    for (j = i + 1; j < p.size() && CGAL::collinear(p[0], p[i], p[j]); ++j) {
+    }                                               // a third, off their line
+    for (std::size_t k = j + 1; k < p.size(); ++k)  // a fourth, off their plane
         if (!CGAL::coplanar(p[0], p[i], p[j], p[k])) return true;
     return false;
 }
@@ -113,7 +114,8 @@ ConvexPolyhedron to_polyhedron(Mesh<K>& mesh) {
             for (Halfedge e : CGAL::halfedges_around_face(mesh.halfedge(faces[i]), mesh)) {
                 const Halfedge o = mesh.opposite(e);
                 const Face n = mesh.face(o);
-                if (region[n] < 0 && std::abs(seed_plane.signed_distance(point[mesh.target(mesh.next(o))])) <= tolerance) {
+                if (region[n] < 0 &&
+                    std::abs(seed_plane.signed_distance(point[mesh.target(mesh.next(o))])) <= tolerance) {
                     region[n] = id;
                     faces.push_back(n);
                 }
@@ -161,7 +163,10 @@ ConvexPolyhedron to_polyhedron(Mesh<K>& mesh) {
     for (PolyFace& f : out.faces) {
         std::erase_if(f.loop, [&](int i) { return faces_at[i] == 2; });
         for (int& i : f.loop) {
-            if (index[i] < 0) { index[i] = int(out.vertices.size()); out.vertices.push_back(point[i]); }
+            if (index[i] < 0) {
+                index[i] = int(out.vertices.size());
+                out.vertices.push_back(point[i]);
+            }
             i = index[i];
         }
     }

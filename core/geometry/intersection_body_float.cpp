@@ -11,9 +11,7 @@ namespace {
 // Distances under this count as zero: a share of the scene's size, plus the rounding of coordinates
 // as far from the origin as its centre (a few hundred double ulps there), so that a small scene far
 // away keeps its shape.
-double clip_tolerance(const Aabb& s) {
-    return 1e-10 * s.diagonal() + 1e-13 * glm::length(s.center());
-}
+double clip_tolerance(const Aabb& s) { return 1e-10 * s.diagonal() + 1e-13 * glm::length(s.center()); }
 
 bool cuts(const ConvexPolyhedron& poly, const Plane& plane, double tolerance) {
     for (const glm::dvec3& v : poly.vertices)
@@ -32,8 +30,8 @@ ConvexPolyhedron clipped(ConvexPolyhedron poly, const std::vector<Plane>& planes
 
 // The plane through edge a-b that contains the light (a point, or a direction when w = 0),
 // oriented so that `inner` lies inside. Nullopt when the edge points at the light.
-std::optional<Plane> silhouette_plane(const glm::dvec3& a, const glm::dvec3& b,
-                                      const glm::dvec4& light, const glm::dvec3& inner) {
+std::optional<Plane> silhouette_plane(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec4& light,
+                                      const glm::dvec3& inner) {
     const glm::dvec3 toward_light = light.w == 0.0 ? glm::dvec3(light) : glm::dvec3(light) - a;
     const glm::dvec3 n = glm::cross(b - a, toward_light);
     const double length = glm::length(n);
@@ -44,8 +42,7 @@ std::optional<Plane> silhouette_plane(const glm::dvec3& a, const glm::dvec3& b,
 }
 
 // Bounding planes of hull(V ∪ light): faces of V turned away from the light, and silhouette planes.
-std::vector<Plane> extrusion_planes(const ConvexPolyhedron& v, const glm::dvec4& light,
-                                    double tolerance) {
+std::vector<Plane> extrusion_planes(const ConvexPolyhedron& v, const glm::dvec4& light, double tolerance) {
     // A face looks at the light when the light is outside its plane: a distance for a point light,
     // a cosine (unitless) for a direction.
     const double facing_tolerance = light.w == 0.0 ? 1e-12 : tolerance;

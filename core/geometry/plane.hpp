@@ -10,9 +10,7 @@ struct Plane {
 
     double signed_distance(const glm::dvec3& p) const { return glm::dot(normal, p) + offset; }
     // Homogeneous point (x, w): w = 0 is a direction (a point at infinity).
-    double signed_distance(const glm::dvec4& p) const {
-        return glm::dot(normal, glm::dvec3(p)) + offset * p.w;
-    }
+    double signed_distance(const glm::dvec4& p) const { return glm::dot(normal, glm::dvec3(p)) + offset * p.w; }
 
     // Plane through a point with an outward normal (normalised here).
     static Plane through(const glm::dvec3& point, const glm::dvec3& outward_normal) {

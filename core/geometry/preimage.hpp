@@ -15,7 +15,8 @@ namespace shadowlab {
 inline Frustum preimage_of_box(const glm::dmat4& box_from_space, const Aabb& box, int depth_axis = 2) {
     const glm::dmat4 space_from_box = glm::inverse(box_from_space);
     const int a = (depth_axis + 1) % 3, b = (depth_axis + 2) % 3;  // the image axes, in the frustum's (x, y) order
-    const std::array<glm::dvec2, 4> image_corners{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};  // (-x,-y), (+x,-y), (+x,+y), (-x,+y)
+    const std::array<glm::dvec2, 4> image_corners{
+        {{0, 0}, {1, 0}, {1, 1}, {0, 1}}};  // (-x,-y), (+x,-y), (+x,+y), (-x,+y)
     Frustum f;
     glm::dvec3 centre(0.0);
     for (int i = 0; i < 8; ++i) {
@@ -28,8 +29,8 @@ inline Frustum preimage_of_box(const glm::dmat4& box_from_space, const Aabb& box
         centre += f.corners[i] / 8.0;
     }
     // Each face's plane by Newell's normal (any four corners, even slightly warped), turned outward.
-    const std::array<std::array<int, 4>, 6> faces{{{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 3, 7, 4}, {1, 2, 6, 5},
-                                                   {0, 1, 5, 4}, {3, 2, 6, 7}}};
+    const std::array<std::array<int, 4>, 6> faces{
+        {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 3, 7, 4}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 2, 6, 7}}};
     for (int k = 0; k < 6; ++k) {
         glm::dvec3 normal(0.0), mid(0.0);
         for (int j = 0; j < 4; ++j) {

@@ -22,11 +22,15 @@ Json to_json(const glm::dmat4& m) {
 }
 
 Json to_json(const TraceValue& value) {
-    return std::visit([](const auto& v) -> Json {
-        using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::string>) return v;
-        else return to_json(v);
-    }, value);
+    return std::visit(
+        [](const auto& v) -> Json {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::string>)
+                return v;
+            else
+                return to_json(v);
+        },
+        value);
 }
 
 static Json polyhedron_json(const ConvexPolyhedron& poly) {
@@ -49,20 +53,33 @@ static Json polygons_json(const PolygonSet& set) {
 }
 
 Json to_json(const NamedGeometry& named) {
-    Json out = std::visit([](const auto& g) -> Json {
-        using T = std::decay_t<decltype(g)>;
-        if constexpr (std::is_same_v<T, PointSet>) return {{"kind", "points"}, {"points", points_json(g.points)}};
-        else if constexpr (std::is_same_v<T, Aabb>) return {{"kind", "aabb"}, {"min", to_json(g.min)}, {"max", to_json(g.max)}};
-        else if constexpr (std::is_same_v<T, ConvexPolyhedron>) return polyhedron_json(g);
-        else if constexpr (std::is_same_v<T, SegmentSet>) return segments_json(g);
-        else if constexpr (std::is_same_v<T, PolygonSet>) return polygons_json(g);
-        else if constexpr (std::is_same_v<T, Arrow>) return {{"kind", "arrow"}, {"from", to_json(g.from)}, {"to", to_json(g.to)}};
-        else if constexpr (std::is_same_v<T, AngleArc>)
-            return {{"kind", "angle"}, {"centre", to_json(g.centre)}, {"from", to_json(g.from)}, {"to", to_json(g.to)},
-                    {"radius", g.radius}};
-        else if constexpr (std::is_same_v<T, Label>) return {{"kind", "label"}, {"at", to_json(g.at)}, {"text", g.text}};
-        else return {{"kind", "frustum"}, {"corners", points_json({g.corners.begin(), g.corners.end()})}};
-    }, named.geometry);
+    Json out = std::visit(
+        [](const auto& g) -> Json {
+            using T = std::decay_t<decltype(g)>;
+            if constexpr (std::is_same_v<T, PointSet>)
+                return {{"kind", "points"}, {"points", points_json(g.points)}};
+            else if constexpr (std::is_same_v<T, Aabb>)
+                return {{"kind", "aabb"}, {"min", to_json(g.min)}, {"max", to_json(g.max)}};
+            else if constexpr (std::is_same_v<T, ConvexPolyhedron>)
+                return polyhedron_json(g);
+            else if constexpr (std::is_same_v<T, SegmentSet>)
+                return segments_json(g);
+            else if constexpr (std::is_same_v<T, PolygonSet>)
+                return polygons_json(g);
+            else if constexpr (std::is_same_v<T, Arrow>)
+                return {{"kind", "arrow"}, {"from", to_json(g.from)}, {"to", to_json(g.to)}};
+            else if constexpr (std::is_same_v<T, AngleArc>)
+                return {{"kind", "angle"},
+                        {"centre", to_json(g.centre)},
+                        {"from", to_json(g.from)},
+                        {"to", to_json(g.to)},
+                        {"radius", g.radius}};
+            else if constexpr (std::is_same_v<T, Label>)
+                return {{"kind", "label"}, {"at", to_json(g.at)}, {"text", g.text}};
+            else
+                return {{"kind", "frustum"}, {"corners", points_json({g.corners.begin(), g.corners.end()})}};
+        },
+        named.geometry);
     out["name"] = named.name;
     out["role"] = to_string(named.role);
     return out;
@@ -73,8 +90,9 @@ Json to_json(const Step& step) {
     for (const NamedValue& v : step.values) values[v.name] = to_json(v.value);
     Json geometry = Json::array();
     for (const NamedGeometry& g : step.geometry) geometry.push_back(to_json(g));
-    return {{"id", step.id}, {"title", step.title}, {"explanation", step.explanation},
-            {"space", to_string(step.space)}, {"values", values}, {"geometry", geometry}};
+    return {
+        {"id", step.id},    {"title", step.title}, {"explanation", step.explanation}, {"space", to_string(step.space)},
+        {"values", values}, {"geometry", geometry}};
 }
 
 Json to_json(const ShadowMap& map) {
@@ -111,7 +129,8 @@ static Json described(const std::vector<Note>& notes) { return notes.empty() ? J
 
 static Json settings_json(const Settings& settings) {
     Json out = Json::object();
-    for (const auto& [key, value] : settings.values()) out[key] = std::visit([](const auto& v) { return Json(v); }, value);
+    for (const auto& [key, value] : settings.values())
+        out[key] = std::visit([](const auto& v) { return Json(v); }, value);
     return out;
 }
 
@@ -129,8 +148,8 @@ Json inspection_json(const std::string& method, const Settings& settings, const 
             {"settings", settings_json(settings)},
             {"fallback", described(setup.fallbacks)},
             {"fallbacks", to_json(setup.fallbacks)},
-            {"inputs", {{"receivers", points_json(inputs.receiver_points())},
-                        {"casters", points_json(inputs.caster_points())}}},
+            {"inputs",
+             {{"receivers", points_json(inputs.receiver_points())}, {"casters", points_json(inputs.caster_points())}}},
             {"maps", maps},
             {"selection", to_json(setup.selection)},
             {"steps", steps_json(trace)}};
@@ -141,8 +160,10 @@ Json technique_inspection_json(const std::string& technique, const Settings& set
     return {{"method", technique},
             {"settings", settings_json(settings)},
             {"limits", to_json(result.limits)},
-            {"cost", {{"polygons", result.cost.polygons}, {"fill_mean", result.cost.fill_mean},
-                      {"fill_max", result.cost.fill_max}}},
+            {"cost",
+             {{"polygons", result.cost.polygons},
+              {"fill_mean", result.cost.fill_mean},
+              {"fill_max", result.cost.fill_max}}},
             {"steps", steps_json(trace)}};
 }
 

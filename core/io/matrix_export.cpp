@@ -34,8 +34,10 @@ std::string export_matrices(const std::string& method, const ShadowSetup& setup,
         return Json{{"method", method}, {"maps", maps}, {"selection", to_json(setup.selection)}}.dump(2) + "\n";
     }
     const bool glsl = format == MatrixFormat::glsl;
-    const std::string vec4 = glsl ? "const vec4 " : "static const float4 ", scalar = glsl ? "const float " : "static const float ";
-    std::string out = "// ShadowLab, " + method + ": world (x, y, z, 1) -> (u, v, d, w); u, v, d in [0,1] after / w.\n"
+    const std::string vec4 = glsl ? "const vec4 " : "static const float4 ",
+                      scalar = glsl ? "const float " : "static const float ";
+    std::string out = "// ShadowLab, " + method +
+                      ": world (x, y, z, 1) -> (u, v, d, w); u, v, d in [0,1] after / w.\n"
                       "// Bias before the division: d = (d_pre - zBiasScale * bias) / w, bias in world units.\n";
     if (setup.maps.size() > 1)
         out += "// " + std::to_string(setup.maps.size()) + " maps, chosen " + to_string(setup.selection.rule) +
@@ -44,11 +46,13 @@ std::string export_matrices(const std::string& method, const ShadowSetup& setup,
         const std::string n = std::to_string(i);
         const ShadowMap& map = setup.maps[i];
         if (map.projection == Projection::paraboloid)  // no 4x4 can say it: its parameters instead
-            out += "// map " + n + " is a paraboloid hemisphere: see the JSON export for its centre, frame, near, far.\n";
+            out +=
+                "// map " + n + " is a paraboloid hemisphere: see the JSON export for its centre, frame, near, far.\n";
         else
-            out += glsl ? "const mat4 worldToUvz" + n + " = mat4(\n    " + entries(map.world_to_uvz, true, ",\n    ") + ");\n"
-                        : "static const float4x4 worldToUvz" + n + " = {\n    " + entries(map.world_to_uvz, false, ",\n    ") +
-                              "};\n";
+            out += glsl ? "const mat4 worldToUvz" + n + " = mat4(\n    " + entries(map.world_to_uvz, true, ",\n    ") +
+                              ");\n"
+                        : "static const float4x4 worldToUvz" + n + " = {\n    " +
+                              entries(map.world_to_uvz, false, ",\n    ") + "};\n";
         out += scalar + "zBiasScale" + n + " = " + number(map.z_bias_scale) + ";\n";
         if (setup.maps.size() > 1)
             out += vec4 + "viewport" + n + (glsl ? " = vec4(" : " = {") + number(map.viewport.x) + ", " +

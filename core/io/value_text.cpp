@@ -45,7 +45,8 @@ std::string aligned_matrix(const glm::dmat4& m, MatrixLayout layout, int digits)
     constexpr size_t kGap = 2;  // spaces between columns
     std::string out;
     for (size_t r = 0; r < 4; ++r) {
-        for (size_t c = 0; c < 4; ++c) out += std::string(width[c] - cells[r][c].size() + (c ? kGap : 0), ' ') + cells[r][c];
+        for (size_t c = 0; c < 4; ++c)
+            out += std::string(width[c] - cells[r][c].size() + (c ? kGap : 0), ' ') + cells[r][c];
         if (r < 3) out += '\n';
     }
     return out;
@@ -55,10 +56,14 @@ std::string value_text(const TraceValue& value, MatrixLayout layout, int digits)
     return std::visit(
         [&](const auto& v) -> std::string {
             using V = std::decay_t<decltype(v)>;
-            if constexpr (std::is_same_v<V, double>) return significant(v, digits);
-            else if constexpr (std::is_same_v<V, std::string>) return v;
-            else if constexpr (std::is_same_v<V, glm::dmat4>) return aligned_matrix(v, layout, digits);
-            else return vector_text(v, digits);
+            if constexpr (std::is_same_v<V, double>)
+                return significant(v, digits);
+            else if constexpr (std::is_same_v<V, std::string>)
+                return v;
+            else if constexpr (std::is_same_v<V, glm::dmat4>)
+                return aligned_matrix(v, layout, digits);
+            else
+                return vector_text(v, digits);
         },
         value);
 }

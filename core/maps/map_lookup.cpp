@@ -49,7 +49,8 @@ int by_view_depth(const ShadowSetup& setup, const glm::dvec3& world) {
     const double depth = view_depth(s, world);
     const int splits = split_count(setup);
     for (int i = 0; i + 1 < splits; ++i)
-        if (depth >= s.split_depths[i] && (depth < s.split_depths[i + 1] || (i + 2 == splits && depth == s.split_depths[i + 1])))
+        if (depth >= s.split_depths[i] &&
+            (depth < s.split_depths[i + 1] || (i + 2 == splits && depth == s.split_depths[i + 1])))
             return i;
     return -1;
 }
@@ -166,7 +167,8 @@ std::optional<MapLookup> look_up_in(const ShadowSetup& setup, int map, const glm
 glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::dvec3& direction) {
     if (map.projection == Projection::paraboloid) {
         const double step = 1e-6 * glm::length(p - map.paraboloid.centre);
-        return (glm::dvec2(world_to_uvz(map, p + step * direction)) - glm::dvec2(world_to_uvz(map, p - step * direction))) /
+        return (glm::dvec2(world_to_uvz(map, p + step * direction)) -
+                glm::dvec2(world_to_uvz(map, p - step * direction))) /
                (2.0 * step);
     }
     // (u, v) = h.xy / h.w with h = M (p, 1); along the direction h changes by M (direction, 0).

@@ -27,9 +27,9 @@ struct Paraboloid {
 
 struct ShadowMap {
     Projection projection = Projection::linear;
-    glm::dmat4 world_to_uvz{1.0};  // linear and cube_face: u, v, d in [0,1] after division by w
-    Paraboloid paraboloid;         // paraboloid only
-    int cube_face = 0;             // cube_face only: 0..5 for +x, -x, +y, -y, +z, -z
+    glm::dmat4 world_to_uvz{1.0};             // linear and cube_face: u, v, d in [0,1] after division by w
+    Paraboloid paraboloid;                    // paraboloid only
+    int cube_face = 0;                        // cube_face only: 0..5 for +x, -x, +y, -y, +z, -z
     glm::dvec4 viewport{0.0, 0.0, 1.0, 1.0};  // (u0, v0, u1, v1): the map's tile in the texture
     // Pre-division depth offset per world unit of bias along the light (XPSM step 18):
     // d' = (d_pre - z_bias_scale * bias) / w.
@@ -50,13 +50,13 @@ struct MapSelection {
         hemisphere,   // the paraboloid whose +z side holds p
     };
     Rule rule = Rule::only;
-    glm::dvec3 eye{0.0};                 // view_depth: depth = (p - eye) . view_axis
+    glm::dvec3 eye{0.0};  // view_depth: depth = (p - eye) . view_axis
     glm::dvec3 view_axis{0.0, 0.0, -1.0};
-    std::vector<double> split_depths;    // view_depth: maps.size() + 1 increasing depths
+    std::vector<double> split_depths;  // view_depth: maps.size() + 1 increasing depths
     // view_depth: the share of each split, at its far end, over which map i crossfades into map i + 1
     // (0: a hard seam; at most 0.5).
     double blend_band = 0.0;
-    glm::dvec3 centre{0.0};              // cube_face: the light's position
+    glm::dvec3 centre{0.0};  // cube_face: the light's position
 };
 const char* to_string(MapSelection::Rule rule);
 

@@ -4,8 +4,7 @@
 
 namespace shadowlab {
 
-inline glm::dmat4 from_rows(const glm::dvec4& r0, const glm::dvec4& r1, const glm::dvec4& r2,
-                            const glm::dvec4& r3) {
+inline glm::dmat4 from_rows(const glm::dvec4& r0, const glm::dvec4& r1, const glm::dvec4& r2, const glm::dvec4& r3) {
     return glm::transpose(glm::dmat4(r0, r1, r2, r3));
 }
 

@@ -30,9 +30,9 @@ std::vector<AtlasTile> atlas_layout(int count, const std::vector<double>& relati
 // The tile as ShadowMap::viewport (u0, v0, u1, v1), v growing up as in our textures.
 glm::dvec4 tile_viewport(const AtlasTile& tile);
 
-// The tile matrix of a Direct3D atlas lookup: the map's NDC (x, y in [-1, 1], y up) onto the texture's (u, v) with v down
-// (Direct3D): scale x by side / 2, y by -side / 2, offset side / 2 + side * (column, row): for 2 x 2,
-// x by 1/4, y by -1/4, offset 1/4 + 1/2 tile.
+// The tile matrix of a Direct3D atlas lookup: the map's NDC (x, y in [-1, 1], y up) onto the texture's (u, v) with v
+// down (Direct3D): scale x by side / 2, y by -side / 2, offset side / 2 + side * (column, row): for 2 x 2, x by 1/4, y
+// by -1/4, offset 1/4 + 1/2 tile.
 glm::dmat4 atlas_tile_matrix(const AtlasTile& tile);
 
 }  // namespace shadowlab

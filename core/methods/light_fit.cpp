@@ -18,8 +18,8 @@ LightBasis light_basis(const glm::dvec3& direction, const glm::dvec3& up_hint, c
     }
     y = glm::normalize(y);
     const glm::dvec3 x = glm::cross(y, z);
-    basis.light_from_world = from_rows({x, -glm::dot(x, origin)}, {y, -glm::dot(y, origin)},
-                                       {z, -glm::dot(z, origin)}, {0, 0, 0, 1});
+    basis.light_from_world =
+        from_rows({x, -glm::dot(x, origin)}, {y, -glm::dot(y, origin)}, {z, -glm::dot(z, origin)}, {0, 0, 0, 1});
     return basis;
 }
 
@@ -44,8 +44,8 @@ static glm::dvec3 safe_extent(const Aabb& box) {
 
 glm::dmat4 unit_from_box(const Aabb& b) {
     const glm::dvec3 e = safe_extent(b);
-    return from_rows({1 / e.x, 0, 0, -b.min.x / e.x}, {0, 1 / e.y, 0, -b.min.y / e.y},
-                     {0, 0, 1 / e.z, -b.min.z / e.z}, {0, 0, 0, 1});
+    return from_rows({1 / e.x, 0, 0, -b.min.x / e.x}, {0, 1 / e.y, 0, -b.min.y / e.y}, {0, 0, 1 / e.z, -b.min.z / e.z},
+                     {0, 0, 0, 1});
 }
 
 ShadowMap orthographic_map(const glm::dmat4& light_from_world, const Aabb& ls_box) {
@@ -62,8 +62,8 @@ double depth_slope_along(const glm::dmat4& uvz_from_world, const glm::dvec3& dir
     return a - (h.z / h.w) * c;
 }
 
-PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
-                               const std::vector<glm::dvec3>& points, double max_half_angle_deg) {
+PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis, const std::vector<glm::dvec3>& points,
+                               double max_half_angle_deg) {
     PerspectiveFit fit;
     const glm::dvec3 up_hint = std::abs(axis.y) < 0.99 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
     fit.light_from_world = light_basis(axis, up_hint, light.position).light_from_world;
@@ -75,7 +75,10 @@ PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
     for (const glm::dvec3& p : ls_points) far = std::max(far, p.z);
     const double min_near = std::max(far, 1e-9) * 1e-6;  // keeps the depth mapping finite
     for (const glm::dvec3& p : ls_points) {
-        if (p.z <= min_near) { ++behind; continue; }
+        if (p.z <= min_near) {
+            ++behind;
+            continue;
+        }
         glm::dvec2 t = glm::dvec2(p) / p.z;
         if (std::abs(t.x) > max_tan || std::abs(t.y) > max_tan) ++outside_cone;
         t = glm::clamp(t, -max_tan, max_tan);
@@ -83,8 +86,9 @@ PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
     }
     if (fit.light_box.empty()) fit.light_box = {{-max_tan, -max_tan, min_near}, {max_tan, max_tan, 2 * min_near}};
     if (behind > 0)
-        fit.fallback = Note{NoteKind::behind_light, std::to_string(behind) +
-                                       " left out: one perspective map cannot cover them (an omnidirectional map would)"};
+        fit.fallback = Note{
+            NoteKind::behind_light,
+            std::to_string(behind) + " left out: one perspective map cannot cover them (an omnidirectional map would)"};
     else if (outside_cone > 0)
         fit.fallback = Note{NoteKind::outside_cone, std::to_string(outside_cone) + " clamped to the cone"};
 

@@ -14,7 +14,7 @@ namespace shadowlab {
 
 struct LightBasis {
     glm::dmat4 light_from_world{1.0};  // rotation (and translation to `origin`): light travels along +z
-    bool up_was_degenerate = false;  // the up hint was parallel to the light: another axis was used
+    bool up_was_degenerate = false;    // the up hint was parallel to the light: another axis was used
 };
 
 // Light space for a direction: z = direction, y = `up_hint` made perpendicular to it, x = y × z.
@@ -52,8 +52,8 @@ struct PerspectiveFit {
     Aabb light_box;                    // tangent-space x, y and distance z of the covered points
     std::optional<Note> fallback;
 };
-PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis,
-                               const std::vector<glm::dvec3>& points, double max_half_angle_deg);
+PerspectiveFit perspective_map(const Light& light, const glm::dvec3& axis, const std::vector<glm::dvec3>& points,
+                               double max_half_angle_deg);
 
 // The perspective map of a light-space frustum given as tangent bounds (x/z, y/z in min.xy..max.xy)
 // and distances along z (near min.z, far max.z): u, v the tangents across the bounds, depth

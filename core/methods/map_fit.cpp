@@ -15,19 +15,19 @@ static void fit_orthographic(const ShadowInputs& in, const MapFitRequest& req, S
     const Aabb ls_box = bounds_of(ls_points);
     setup.maps.push_back(orthographic_map(basis.light_from_world, ls_box));
     record(trace, [&](Trace& t) {
-        Step& light_space =
-            t.add("light-space", "Light space", "rows x, y, z: z = light direction, y = up hint made perpendicular",
-                  Space::light)
-            .value("world_to_light", basis.light_from_world)
-            .value("up_hint", req.up_hint)
-            .value("up_hint_parallel_to_light", basis.up_was_degenerate ? 1.0 : 0.0)
-            .shape("points", PointSet{ls_points}, Role::focus);
+        Step& light_space = t.add("light-space", "Light space",
+                                  "rows x, y, z: z = light direction, y = up hint made perpendicular", Space::light)
+                                .value("world_to_light", basis.light_from_world)
+                                .value("up_hint", req.up_hint)
+                                .value("up_hint_parallel_to_light", basis.up_was_degenerate ? 1.0 : 0.0)
+                                .shape("points", PointSet{ls_points}, Role::focus);
         // In light space the light travels along +z: L arrives at the points' box from above.
         draw_arrow(light_space, "L", ls_box.center() - glm::dvec3(0, 0, ls_box.extent().z + ls_box.diagonal() / 4),
                    {0, 0, 1}, ls_box.diagonal() / 4, Role::light);
         t.add("light-box", "Light-space fit", "AABB of the points in light space: the orthographic projection",
               Space::light)
-            .value("min", ls_box.min).value("max", ls_box.max)
+            .value("min", ls_box.min)
+            .value("max", ls_box.max)
             .shape("fit", ls_box, Role::map);
         Step& unit = t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min): the light box onto [0,1]^3",
                            Space::unit)
@@ -58,8 +58,10 @@ static void fit_perspective(const ShadowInputs& in, const MapFitRequest& req, Sh
         const Frustum light_frustum = preimage_of_box(uvz_from_light, Aabb{glm::dvec3(0.0), glm::dvec3(1.0)});
         t.add("light-frustum", "Light frustum fit",
               "tangent bounds (x/z, y/z) and distance range of the points, clamped to the cone", Space::light)
-            .value("tan_min", glm::dvec2(fit.light_box.min)).value("tan_max", glm::dvec2(fit.light_box.max))
-            .value("near", fit.light_box.min.z).value("far", fit.light_box.max.z)
+            .value("tan_min", glm::dvec2(fit.light_box.min))
+            .value("tan_max", glm::dvec2(fit.light_box.max))
+            .value("near", fit.light_box.min.z)
+            .value("far", fit.light_box.max.z)
             .shape("light frustum", light_frustum, Role::map)
             .shape("near and far", near_and_far_faces(light_frustum), Role::map);
         t.set_frame(Space::light, fit.light_from_world);
@@ -95,7 +97,8 @@ void record_output(const ShadowSetup& setup, const std::vector<glm::dvec3>& cove
             const glm::dvec3 ws_origin = ws(glm::dvec3(0.0));
             for (const auto& [name, axis] : {std::pair{"u", glm::dvec3(1, 0, 0)}, std::pair{"v", glm::dvec3(0, 1, 0)},
                                              std::pair{"d", glm::dvec3(0, 0, 1)}})
-                output.shape(name, Arrow{ws_origin, ws(axis)}).shape(std::string(name) + " label", Label{ws(axis), name});
+                output.shape(name, Arrow{ws_origin, ws(axis)})
+                    .shape(std::string(name) + " label", Label{ws(axis), name});
         }
         if (!setup.maps.empty()) t.set_frame(Space::unit, setup.maps.front().world_to_uvz);
     });

@@ -7,13 +7,9 @@
 
 namespace shadowlab {
 
-double Settings::number(const std::string& name) const {
-    return std::get<double>(values_.at(name));
-}
+double Settings::number(const std::string& name) const { return std::get<double>(values_.at(name)); }
 
-const std::string& Settings::choice(const std::string& name) const {
-    return std::get<std::string>(values_.at(name));
-}
+const std::string& Settings::choice(const std::string& name) const { return std::get<std::string>(values_.at(name)); }
 
 namespace {
 

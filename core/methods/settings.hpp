@@ -25,7 +25,7 @@ class Settings {
 public:
     double number(const std::string& name) const;
     const std::string& choice(const std::string& name) const;
-    std::vector<double> numbers(const std::string& name) const;  // a list setting, as given
+    std::vector<double> numbers(const std::string& name) const;                      // a list setting, as given
     const std::string& text(const std::string& name) const { return choice(name); }  // a text setting
     const std::map<std::string, std::variant<double, std::string>>& values() const { return values_; }
     void set(const std::string& name, std::variant<double, std::string> value) { values_[name] = std::move(value); }

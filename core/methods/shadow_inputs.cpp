@@ -79,8 +79,6 @@ ShadowInputs gather_inputs(const Camera& camera, const Light& light, const std::
     return in;
 }
 
-ShadowInputs gather_inputs(const Scene& scene) {
-    return gather_inputs(scene.camera, scene.light, object_boxes(scene));
-}
+ShadowInputs gather_inputs(const Scene& scene) { return gather_inputs(scene.camera, scene.light, object_boxes(scene)); }
 
 }  // namespace shadowlab

@@ -7,5 +7,4 @@ ShadowSetup compute_tsm(const ShadowInputs& inputs, const Settings& settings, Tr
 // tsm's settings, with their ranges and defaults.
 std::vector<SettingSpec> tsm_settings();
 
-
 }  // namespace shadowlab

@@ -7,5 +7,4 @@ ShadowSetup compute_xpsm(const ShadowInputs& inputs, const Settings& settings, T
 // xpsm's settings, with their ranges and defaults.
 std::vector<SettingSpec> xpsm_settings();
 
-
 }  // namespace shadowlab

@@ -56,7 +56,8 @@ bool misclassified(PixelVerdict v) { return v == PixelVerdict::false_shadow || v
 MapBreakdown break_down_by_map(const ReferenceImage& ref, const ShadowError& e, const ShadowSetup& setup,
                                int seam_pixels) {
     const std::vector<int> map = map_per_pixel(ref, e, setup);
-    const std::vector<uint8_t> near_seam = dilated(boundaries(map, ref.width, ref.height), ref.width, ref.height, seam_pixels);
+    const std::vector<uint8_t> near_seam =
+        dilated(boundaries(map, ref.width, ref.height), ref.width, ref.height, seam_pixels);
     MapBreakdown out;
     out.maps.resize(setup.maps.size());
     std::vector<std::vector<double>> perspective(setup.maps.size());

@@ -50,8 +50,8 @@ struct ShadowError {
     AliasingStats depth_step;
     // Per pixel; 0 where not measured.
     std::vector<float> m_image, m_perspective_image, m_projection_image;
-    std::vector<PixelVerdict> verdicts;   // per pixel
-    VisibilityError visibility;           // against the reference's visibility (soft where traced)
+    std::vector<PixelVerdict> verdicts;  // per pixel
+    VisibilityError visibility;          // against the reference's visibility (soft where traced)
 };
 
 // The visibility of every receiver pixel under the reader's maps (-1 elsewhere): the lookups,

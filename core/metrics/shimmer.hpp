@@ -24,10 +24,10 @@ std::vector<ShimmerSample> shimmer_samples(const MeasureContext& context);
 
 struct FrameShimmer {
     int frame = 0;
-    size_t judged = 0;       // samples inside this frame's view frustum
-    size_t wrong = 0;        // of those, judged otherwise than the reference
-    size_t transitions = 0;  // samples judged in this frame and in the one before
-    size_t flips = 0;        // of those, whose verdict changed
+    size_t judged = 0;            // samples inside this frame's view frustum
+    size_t wrong = 0;             // of those, judged otherwise than the reference
+    size_t transitions = 0;       // samples judged in this frame and in the one before
+    size_t flips = 0;             // of those, whose verdict changed
     std::vector<Note> fallbacks;  // what the method fell back to in this frame
 };
 

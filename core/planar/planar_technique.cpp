@@ -54,17 +54,20 @@ void record_receiver(Trace* trace, const Scene& scene, const WorldTriangles& tri
         const PolygonSet plane = plane_triangles(triangles, r.object);
         Aabb plane_bounds;
         for (const glm::dvec4& v : plane.vertices) plane_bounds.extend(glm::dvec3(v));
-        t.add("planar.plane." + name, "Receiver plane '" + name + "'", "P = (n, d): n . x + d = 0, the light on its + side",
-              Space::world)
+        t.add("planar.plane." + name, "Receiver plane '" + name + "'",
+              "P = (n, d): n . x + d = 0, the light on its + side", Space::world)
             .value("P", r.plane)
             .shape("P", plane, Role::receivers)
-            .shape("n", Arrow{plane_bounds.center(), plane_bounds.center() + plane_bounds.diagonal() / 4 * glm::dvec3(r.plane)},
-                   Role::receivers)
+            .shape(
+                "n",
+                Arrow{plane_bounds.center(), plane_bounds.center() + plane_bounds.diagonal() / 4 * glm::dvec3(r.plane)},
+                Role::receivers)
             .shape("P label", Label{plane_bounds.center(), "P: '" + name + "'"}, Role::receivers);
         const double p_dot_l = glm::dot(r.plane, scene.light.homogeneous());
-        draw_light(t.add("planar.light." + name, "Light", "L = (position, 1), or (-direction, 0) for a directional light",
-                         Space::world)
-                       .value("L", scene.light.homogeneous()).value("P . L", p_dot_l)
+        draw_light(t.add("planar.light." + name, "Light",
+                         "L = (position, 1), or (-direction, 0) for a directional light", Space::world)
+                       .value("L", scene.light.homogeneous())
+                       .value("P . L", p_dot_l)
                        .shape("P", plane, Role::receivers)
                        .shape("P . L label", Label{plane_bounds.center(), "P · L = " + label_number(p_dot_l)}),
                    scene.light, plane_bounds.center(), plane_bounds.diagonal() / 2);
@@ -72,11 +75,14 @@ void record_receiver(Trace* trace, const Scene& scene, const WorldTriangles& tri
         for (const HomogeneousPolygon& p : f.polygons) flattened.add(p);
         Step& matrix = t.add("planar.matrix." + name, "Projection matrix",
                              "M = (P . L) I - L P^T; x -> M x, divided by w, on the plane", Space::world)
-                           .value("M", r.projection).value("flattened triangles", double(f.polygons.size()))
+                           .value("M", r.projection)
+                           .value("flattened triangles", double(f.polygons.size()))
                            .value("triangles below the plane", double(f.below_plane))
                            .value("triangles beyond the light", double(f.beyond_light));
-        if (flattened.polygons.empty()) matrix.shape("shadow label", Label{plane_bounds.center(), "no caster above the plane"});
-        else matrix.shape("shadow", std::move(flattened));
+        if (flattened.polygons.empty())
+            matrix.shape("shadow label", Label{plane_bounds.center(), "no caster above the plane"});
+        else
+            matrix.shape("shadow", std::move(flattened));
     });
 }
 
@@ -84,22 +90,22 @@ std::vector<Note> limits(const Receivers& r, int below, int beyond) {
     std::vector<Note> out;
     if (!r.not_planes.empty())
         out.push_back(Note{NoteKind::not_planar_receiver,
-                                      some_names(r.not_planes) + " receive but are not planes: no shadow falls on them"});
+                           some_names(r.not_planes) + " receive but are not planes: no shadow falls on them"});
     if (below > 0)
         out.push_back(Note{NoteKind::below_plane, std::to_string(below) +
-                                                                 " caster triangles reach below a receiving plane and "
-                                                                 "throw false shadows onto it"});
+                                                      " caster triangles reach below a receiving plane and "
+                                                      "throw false shadows onto it"});
     if (beyond > 0)
         out.push_back(Note{NoteKind::beyond_light, std::to_string(beyond) +
-                                                                  " caster triangles reach as far from the plane as " +
-                                                                  "the light (w <= 0): clipped, else anti-shadows"});
+                                                       " caster triangles reach as far from the plane as " +
+                                                       "the light (w <= 0): clipped, else anti-shadows"});
     return out;
 }
 
 }  // namespace
 
 GeometryResult compute_planar(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
-                               const Settings&, Trace* trace) {
+                              const Settings&, Trace* trace) {
     GeometryResult result;
     const std::size_t pixels = std::size_t(image.width) * image.height;
     result.shadowed.assign(pixels, 0);
@@ -133,13 +139,14 @@ GeometryResult compute_planar(const Scene& scene, const WorldTriangles& triangle
     record(trace, [&](Trace& t) {
         std::size_t shadowed = 0;
         for (uint8_t s : result.shadowed) shadowed += s;
-        draw_shadowed_points(t.add("planar.pixels", "Shadowed pixels",
-                                   "a pixel of a receiving plane is shadowed where a flattened caster covers it",
-                                   Space::view)
-                                 .value("image", glm::dvec2(image.width, image.height))
-                                 .value("shadowed pixels", double(shadowed))
-                                 .value("fill mean", result.cost.fill_mean).value("fill max", result.cost.fill_max),
-                             result.shadowed, image, scene.camera);
+        draw_shadowed_points(
+            t.add("planar.pixels", "Shadowed pixels",
+                  "a pixel of a receiving plane is shadowed where a flattened caster covers it", Space::view)
+                .value("image", glm::dvec2(image.width, image.height))
+                .value("shadowed pixels", double(shadowed))
+                .value("fill mean", result.cost.fill_mean)
+                .value("fill max", result.cost.fill_max),
+            result.shadowed, image, scene.camera);
     });
     result.limits = limits(r, below, beyond);
     result.rule = StencilRule::cover;

@@ -6,6 +6,6 @@
 namespace shadowlab {
 
 GeometryResult compute_planar(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
-                               const Settings& settings, Trace* trace);
+                              const Settings& settings, Trace* trace);
 
 }  // namespace shadowlab

@@ -17,8 +17,8 @@ struct ReferenceImage {
     std::vector<int> object;           // its object's index in Scene::objects; -1 where nothing is visible
     std::vector<uint8_t> visible;      // the primary ray meets a triangle between near and far
     std::vector<uint8_t> lit;          // visible, and no caster triangle lies between it and the light
-    std::vector<float> facing;         // cos of the angle between the seen side's normal and the light: <= 0 in its own shade
-    std::vector<glm::dvec3> normal;    // the seen side's unit normal; (0, 0, 0) where nothing is visible or not traced
+    std::vector<float> facing;  // cos of the angle between the seen side's normal and the light: <= 0 in its own shade
+    std::vector<glm::dvec3> normal;  // the seen side's unit normal; (0, 0, 0) where nothing is visible or not traced
     // soft_reference only: the share of an area light each visible point sees, from light_samples rays.
     std::vector<float> visibility;
     int light_samples = 0;

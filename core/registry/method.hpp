@@ -52,9 +52,9 @@ struct Method {
     std::string description;  // one line
     std::vector<SettingSpec> settings;
     LightSupport lights;
-    Coverage covers = Coverage::visible_receivers;  // map methods
-    ComputeMaps compute_maps = nullptr;          // a shadow-map method, or
-    ComputeGeometry compute_geometry = nullptr;  // a geometric technique: exactly one is set
+    Coverage covers = Coverage::visible_receivers;      // map methods
+    ComputeMaps compute_maps = nullptr;                 // a shadow-map method, or
+    ComputeGeometry compute_geometry = nullptr;         // a geometric technique: exactly one is set
     ReadsVisibleDepths reads_visible_depths = nullptr;  // a map method that may: when its settings say so
 
     Produces produces() const { return compute_maps ? Produces::maps : Produces::geometry; }

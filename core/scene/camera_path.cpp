@@ -8,11 +8,12 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kAutomaticShare = 0.005;    // of the camera's distance to its target, per frame
-constexpr double kAutomaticDegrees = 0.25;   // per frame
+constexpr double kAutomaticShare = 0.005;   // of the camera's distance to its target, per frame
+constexpr double kAutomaticDegrees = 0.25;  // per frame
 
-constexpr std::array<std::pair<CameraPath::Kind, const char*>, 3> kNames{
-    {{CameraPath::Kind::translate, "translate"}, {CameraPath::Kind::rotate, "rotate"}, {CameraPath::Kind::dolly, "dolly"}}};
+constexpr std::array<std::pair<CameraPath::Kind, const char*>, 3> kNames{{{CameraPath::Kind::translate, "translate"},
+                                                                          {CameraPath::Kind::rotate, "rotate"},
+                                                                          {CameraPath::Kind::dolly, "dolly"}}};
 
 // The camera's right axis, perpendicular to its view and its up.
 glm::dvec3 right_of(const Camera& c) { return glm::normalize(glm::cross(c.view_direction(), c.up)); }

@@ -66,16 +66,11 @@ bool mesh_contains(const TriangleMesh& mesh, const glm::dvec3& local) {
 bool SceneObject::contains(const glm::dvec3& world) const {
     const glm::dvec3 local = glm::dvec3(glm::inverse(model_matrix()) * glm::dvec4(world, 1.0));
     switch (shape) {
-        case Shape::box:
-            return glm::all(glm::lessThanEqual(glm::abs(local), size / 2.0));
-        case Shape::sphere:
-            return glm::length(local) <= radius;
-        case Shape::plane:
-            return false;
-        case Shape::cylinder:
-            return std::hypot(local.x, local.z) <= radius && std::abs(local.y) <= height / 2.0;
-        case Shape::mesh:
-            return mesh && mesh_contains(*mesh, local);
+        case Shape::box: return glm::all(glm::lessThanEqual(glm::abs(local), size / 2.0));
+        case Shape::sphere: return glm::length(local) <= radius;
+        case Shape::plane: return false;
+        case Shape::cylinder: return std::hypot(local.x, local.z) <= radius && std::abs(local.y) <= height / 2.0;
+        case Shape::mesh: return mesh && mesh_contains(*mesh, local);
     }
     return false;
 }

@@ -19,10 +19,10 @@ struct SceneObject {
     glm::dvec3 position{0.0};
     glm::dvec3 rotation_deg{0.0};  // applied about x, then y, then z
     glm::dvec3 scale{1.0};
-    glm::dvec3 size{1.0};          // box: full extents; plane: x and z extents (y unused)
-    double radius = 0.5;           // sphere, cylinder
-    double height = 1.0;           // cylinder (along local y)
-    std::string mesh_file;         // mesh: path as written in the scene
+    glm::dvec3 size{1.0};   // box: full extents; plane: x and z extents (y unused)
+    double radius = 0.5;    // sphere, cylinder
+    double height = 1.0;    // cylinder (along local y)
+    std::string mesh_file;  // mesh: path as written in the scene
     std::shared_ptr<const TriangleMesh> mesh;
     bool casts = true;
     bool receives = true;

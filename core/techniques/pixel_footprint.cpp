@@ -7,8 +7,8 @@ namespace shadowlab {
 
 PixelBox pixel_footprint(const glm::dmat4& world_to_clip, const CameraRays& rays, const HomogeneousPolygon& polygon) {
     // Near (z >= -w) and the four sides (-w <= x, y <= w); no far plane.
-    static const ClipPlane planes[] = {{{0, 0, 1, 1}, 0.0}, {{1, 0, 0, 1}, 0.0}, {{-1, 0, 0, 1}, 0.0},
-                                       {{0, 1, 0, 1}, 0.0}, {{0, -1, 0, 1}, 0.0}};
+    static const ClipPlane planes[] = {
+        {{0, 0, 1, 1}, 0.0}, {{1, 0, 0, 1}, 0.0}, {{-1, 0, 0, 1}, 0.0}, {{0, 1, 0, 1}, 0.0}, {{0, -1, 0, 1}, 0.0}};
     HomogeneousPolygon clipped;
     for (const glm::dvec4& v : polygon) clipped.push_back(world_to_clip * v);
     for (const ClipPlane& plane : planes) clipped = clip(clipped, plane);

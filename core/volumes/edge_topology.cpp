@@ -20,7 +20,8 @@ ObjectTopology topology_of(const Scene& scene, const WorldTriangles& triangles, 
             const glm::dvec3& p = triangles.vertices[triangles.triangles[triangle][k]];
             const glm::dvec3& q = triangles.vertices[triangles.triangles[triangle][(k + 1) % 3]];
             const bool forward = key_of(p) < key_of(q);
-            const auto [it, added] = index.try_emplace({key_of(forward ? p : q), key_of(forward ? q : p)}, t.edges.size());
+            const auto [it, added] =
+                index.try_emplace({key_of(forward ? p : q), key_of(forward ? q : p)}, t.edges.size());
             if (added) t.edges.push_back({forward ? p : q, forward ? q : p, {}});
             t.edges[it->second].uses.push_back({triangle, forward ? 1 : -1});
         }

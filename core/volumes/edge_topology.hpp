@@ -23,7 +23,9 @@ struct MeshEdge {
 
     bool open() const { return uses.size() == 1; }
     // More than two triangles, or two running the same way (inconsistent winding).
-    bool non_manifold() const { return uses.size() > 2 || (uses.size() == 2 && uses[0].direction == uses[1].direction); }
+    bool non_manifold() const {
+        return uses.size() > 2 || (uses.size() == 2 && uses[0].direction == uses[1].direction);
+    }
 };
 
 struct ObjectTopology {

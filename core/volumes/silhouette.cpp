@@ -11,9 +11,9 @@ namespace shadowlab {
 // own small numbers, and a scene far from the origin keeps its signs.
 double light_facing(const std::array<glm::dvec3, 3>& c, const glm::dvec4& light) {
     const glm::dvec4 local_light = light - glm::dvec4(c[0] * light.w, 0.0);
-    return glm::dot(plane_through(glm::dvec4(0.0, 0.0, 0.0, 1.0), glm::dvec4(c[1] - c[0], 1.0),
-                                  glm::dvec4(c[2] - c[0], 1.0)),
-                    local_light);
+    return glm::dot(
+        plane_through(glm::dvec4(0.0, 0.0, 0.0, 1.0), glm::dvec4(c[1] - c[0], 1.0), glm::dvec4(c[2] - c[0], 1.0)),
+        local_light);
 }
 
 namespace {
@@ -34,7 +34,8 @@ std::map<int, int> casting_signs(const ObjectTopology& object, const WorldTriang
         const double facing = light_facing(triangle.corners, light);
         sign[t] = facing > 0.0 ? 1 : (facing < 0.0 && !object.closed() ? -1 : 0);
         if (sign[t] != 0) out.casting.push_back(sign[t] > 0 ? triangle : reversed(triangle));
-        if (object.closed() && facing < 0.0) out.back_cap.push_back(triangle);  // Everitt-Kilgard: back faces at infinity
+        if (object.closed() && facing < 0.0)
+            out.back_cap.push_back(triangle);  // Everitt-Kilgard: back faces at infinity
         if (!object.closed() && sign[t] != 0) out.back_cap.push_back(reversed(out.casting.back()));
     }
     return sign;

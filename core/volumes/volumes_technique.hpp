@@ -9,6 +9,6 @@ namespace shadowlab {
 SettingSpec volumes_count_setting();
 
 GeometryResult compute_volumes(const Scene& scene, const WorldTriangles& triangles, const ReferenceImage& image,
-                                const Settings& settings, Trace* trace);
+                               const Settings& settings, Trace* trace);
 
 }  // namespace shadowlab

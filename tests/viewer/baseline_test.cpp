@@ -35,10 +35,20 @@ const Baseline kBaselineViews[] = {
     {"camera_focused_teaching", "teaching.json", "focused", ViewKind::camera, {}},
     {"camera_volumes_teaching", "teaching.json", "volumes", ViewKind::camera, {}},
     {"world_lispsm_body", "box_on_plane.json", "lispsm", ViewKind::world, {.step = "body"}},
-    {"light_side_lispsm_gamma", "box_on_plane.json", "lispsm", ViewKind::light,
+    {"light_side_lispsm_gamma",
+     "box_on_plane.json",
+     "lispsm",
+     ViewKind::light,
      {.step = "gamma", .preset = SpacePreset::side}},
-    {"ppls_side_lispsm_warp", "box_on_plane.json", "lispsm", ViewKind::ppls, {.step = "warp", .preset = SpacePreset::side}},
-    {"ppls_light_xpsm_focus", "box_on_plane.json", "xpsm", ViewKind::ppls,
+    {"ppls_side_lispsm_warp",
+     "box_on_plane.json",
+     "lispsm",
+     ViewKind::ppls,
+     {.step = "warp", .preset = SpacePreset::side}},
+    {"ppls_light_xpsm_focus",
+     "box_on_plane.json",
+     "xpsm",
+     ViewKind::ppls,
      {.step = "xpsm-13", .preset = SpacePreset::from_light}},
     {"shadowmap_xpsm_default", "default.json", "xpsm", ViewKind::shadow_map, {}},
     {"error_lispsm_default", "default.json", "lispsm", ViewKind::error, {}},
@@ -46,14 +56,11 @@ const Baseline kBaselineViews[] = {
 
 void PrintTo(const Baseline& b, std::ostream* out) { *out << b.name; }
 
-
 RgbImage draw(const Baseline& b) {
     const Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/" + b.scene);
     const glm::ivec2 camera_image = image_size_within(scene.camera, 400, 250);
-    const Inspection in = inspect_scene(scene, {.method = b.method,
-                                                .resolution = 1024,
-                                                .image_width = camera_image.x,
-                                                .image_height = camera_image.y});
+    const Inspection in = inspect_scene(
+        scene, {.method = b.method, .resolution = 1024, .image_width = camera_image.x, .image_height = camera_image.y});
     const glm::ivec2 size = looks_through_scene_camera(b.view) ? camera_image : glm::ivec2(400, 250);
     return render_view(in, b.view, b.options, size.x, size.y);
 }

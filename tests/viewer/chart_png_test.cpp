@@ -127,6 +127,8 @@ TEST(ChartPng, NoDisplayThrowsAClearMessage) {
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("xvfb-run"), std::string::npos) << e.what();
     }
-    if (display) setenv("DISPLAY", saved.c_str(), 1);
-    else unsetenv("DISPLAY");
+    if (display)
+        setenv("DISPLAY", saved.c_str(), 1);
+    else
+        unsetenv("DISPLAY");
 }

@@ -86,7 +86,11 @@ std::string printed(Run&& run) {
 
 nlohmann::json measured(const std::string& scene, const std::string& method, int resolution) {
     return nlohmann::json::parse(printed([&] {
-        run_measure({.scene_file = scene, .method = method, .resolution = resolution, .width = 320, .height = 180,
+        run_measure({.scene_file = scene,
+                     .method = method,
+                     .resolution = resolution,
+                     .width = 320,
+                     .height = 180,
                      .json = true});
     }));
 }
@@ -116,7 +120,8 @@ TEST_F(Extension, AThrowAwayMethodGoesThroughInspectMeasureRenderAndEveryView) {
     EXPECT_EQ(inspected["maps"].size(), 1u);
 
     // The same map as the uniform method's: the same measure, to the last digit.
-    const nlohmann::json mine = measured(scene_file(), "throwaway", 512), uniform = measured(scene_file(), "uniform", 512);
+    const nlohmann::json mine = measured(scene_file(), "throwaway", 512),
+                         uniform = measured(scene_file(), "uniform", 512);
     EXPECT_EQ(mine["method"], "throwaway");
     EXPECT_GT(mine["receiver_pixels"].get<int>(), 1000);
     EXPECT_EQ(mine["misclassified"], uniform["misclassified"]);
@@ -125,8 +130,13 @@ TEST_F(Extension, AThrowAwayMethodGoesThroughInspectMeasureRenderAndEveryView) {
     for (ViewKind view : all_views()) {
         const std::string out = ::testing::TempDir() + "throwaway_" + to_string(view) + ".png";
         std::filesystem::remove(out);
-        run_render({.scene_file = scene_file(), .method = "throwaway", .view = to_string(view), .width = 320,
-                    .height = 180, .resolution = 512, .out = out});
+        run_render({.scene_file = scene_file(),
+                    .method = "throwaway",
+                    .view = to_string(view),
+                    .width = 320,
+                    .height = 180,
+                    .resolution = 512,
+                    .out = out});
         EXPECT_TRUE(std::filesystem::exists(out)) << to_string(view);
     }
 

@@ -28,7 +28,6 @@ std::string read_text(const std::filesystem::path& file) {
     return text.str();
 }
 
-
 // The share of pixels in the image's most common colour (1: one flat colour).
 double commonest_colour_share(const RgbImage& image) {
     std::map<std::array<unsigned char, 3>, size_t> counts;
@@ -44,14 +43,20 @@ std::vector<std::string> first_matrix_row(const std::string& html, const std::st
     const std::string after = html.substr(at);
     const std::regex cell(R"(<td title="[^"]*">([^<]*)</td>)");
     std::vector<std::string> cells;
-    for (auto it = std::sregex_iterator(after.begin(), after.end(), cell); it != std::sregex_iterator() && cells.size() < 4; ++it)
+    for (auto it = std::sregex_iterator(after.begin(), after.end(), cell);
+         it != std::sregex_iterator() && cells.size() < 4; ++it)
         cells.push_back((*it)[1]);
     return cells;
 }
 
 LessonOptions lesson_into(const std::string& name, bool row_vectors) {
-    return {.scene_file = kScene, .method = "lispsm", .resolution = 256, .width = 200, .height = 130,
-            .row_vectors = row_vectors, .out = ::testing::TempDir() + name + std::to_string(getpid())};
+    return {.scene_file = kScene,
+            .method = "lispsm",
+            .resolution = 256,
+            .width = 200,
+            .height = 130,
+            .row_vectors = row_vectors,
+            .out = ::testing::TempDir() + name + std::to_string(getpid())};
 }
 
 }  // namespace
@@ -68,7 +73,8 @@ TEST(Lesson, EveryStepHasItsTitleFormulaValuesAndPictures) {
         for (const NamedValue& v : step.values) matrices += std::holds_alternative<glm::dmat4>(v.value);
     }
     size_t tables = 0;
-    for (size_t at = html.find("class=\"matrix\""); at != std::string::npos; at = html.find("class=\"matrix\"", at + 1)) ++tables;
+    for (size_t at = html.find("class=\"matrix\""); at != std::string::npos; at = html.find("class=\"matrix\"", at + 1))
+        ++tables;
     EXPECT_EQ(tables, matrices);
 
     // Every picture the page shows exists and draws something (not one flat colour); every step has one.

@@ -17,7 +17,6 @@ namespace {
 
 std::string scene(const std::string& name) { return std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/" + name; }
 
-
 }  // namespace
 
 TEST(RenderCommand, DefaultSceneCameraViewHasVisibleShadows) {
@@ -61,7 +60,8 @@ TEST(RenderCommand, CameraViewKeepsTheCamerasAspect) {
     }
     const std::string out = ::testing::TempDir() + "square_" + std::to_string(getpid()) + ".png";
     for (const auto& [view, width, height] : {std::tuple{"camera", 180, 180}, std::tuple{"world", 320, 180}}) {
-        const auto r = run_cli("render " + square + " --view " + view + " --size 320x180 --resolution 256 --out " + out);
+        const auto r =
+            run_cli("render " + square + " --view " + view + " --size 320x180 --resolution 256 --out " + out);
         ASSERT_EQ(r.exit_code, 0) << r.err;
         const RgbImage image = read_png(out);
         EXPECT_EQ(image.width, width) << view;

@@ -44,8 +44,7 @@ TEST(ShadowMapView, TexelGridShowsOnlyWhenTexelsAreLarge) {
         const RgbImage image = render_view(inspect(scene, "focused", resolution), ViewKind::shadow_map, {}, 512, 512);
         size_t count = 0;
         for (int y = 0; y < image.height - 40; ++y)  // above the caption
-            for (int x = 0; x < image.width; ++x)
-                count += image.at(x, y)[2] > image.at(x, y)[0] + 60;
+            for (int x = 0; x < image.width; ++x) count += image.at(x, y)[2] > image.at(x, y)[0] + 60;
         return count;
     };
     EXPECT_GT(bluish_pixels(32), 512u * 20);  // 33 lines each way, 16 pixels apart
@@ -62,7 +61,7 @@ TEST(ErrorView, PaintsMisclassifiedPixelsByKind) {
         request.method = method;
         request.image_width = kWidth;
         const RgbImage image = render_view(inspect_scene(scene, request), ViewKind::error, {}, kWidth, kHeight);
-        std::array<size_t, 2> counts{};  // false light, false shadow
+        std::array<size_t, 2> counts{};              // false light, false shadow
         for (int y = 0; y < image.height - 30; ++y)  // above the caption
             for (int x = 0; x < image.width; ++x) {
                 const unsigned char* c = image.at(x, y);
@@ -77,4 +76,3 @@ TEST(ErrorView, PaintsMisclassifiedPixelsByKind) {
     const auto volumes = painted("volumes", "volumes");
     EXPECT_LT(volumes[0] + volumes[1], 9 * kWidth * kHeight / 1000u);  // under 0.1 % of pixels, each painted 3 x 3
 }
-

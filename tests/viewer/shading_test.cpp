@@ -69,7 +69,7 @@ Classified classify(const Scene& scene, const ReferenceImage& ref, const RgbImag
             if (!interior) continue;
             const bool ground = scene.objects[ref.object[i]].shape == Shape::plane;
             ReachingLight* light = ground ? (in_shadow(x, y) ? &out.shadowed_ground : &out.lit_ground)
-                                  : (ref.facing[i] < -0.2f ? &out.facing_away : nullptr);
+                                          : (ref.facing[i] < -0.2f ? &out.facing_away : nullptr);
             if (!light) continue;
             const unsigned char* c = shaded.at(x, y);
             light->sum += glm::dvec3(c[0], c[1], c[2]) / (255.0 * albedo[ref.object[i]]);

@@ -41,7 +41,8 @@ TEST(ShimmerCommand, WritesARowPerFrameAndThePlot) {
     int rows = 0;
     while (std::getline(csv, line)) {
         ++rows;
-        EXPECT_NE(line.find(",0,\""), std::string::npos) << "uniform's map does not follow the camera: no flip: " << line;
+        EXPECT_NE(line.find(",0,\""), std::string::npos)
+            << "uniform's map does not follow the camera: no flip: " << line;
     }
     EXPECT_EQ(rows, o.frames);
     EXPECT_GT(std::filesystem::file_size(std::filesystem::path(o.out_dir) / "shimmer.png"), 1000u);

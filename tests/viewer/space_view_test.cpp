@@ -20,7 +20,7 @@ namespace {
 
 constexpr int kWidth = 640, kHeight = 480;
 constexpr int kLegendRows = 56;  // the legend's swatches, in the shapes' colours, stand in the rows above this one
-constexpr size_t kVisible = 30;     // pixels: a thin line a tenth of the picture across
+constexpr size_t kVisible = 30;  // pixels: a thin line a tenth of the picture across
 
 // The shipped methods: those registered before any test runs (extension_test registers throw-away
 // methods of its own while it runs, with no steps of their own to draw).
@@ -85,7 +85,8 @@ Span straight_edges(const RgbImage& image, const glm::dvec3& colour, bool column
     Span span;
     for (int i = columns ? 0 : kLegendRows; i < lines; ++i) {
         int run = 0;
-        for (int j = columns ? kLegendRows : 0; j < along; ++j) run += has_colour(columns ? image.at(i, j) : image.at(j, i), colour);
+        for (int j = columns ? kLegendRows : 0; j < along; ++j)
+            run += has_colour(columns ? image.at(i, j) : image.at(j, i), colour);
         if (run < share * along) continue;
         if (span.first < 0) span.first = i;
         span.last = i;
@@ -106,12 +107,14 @@ double frustum_end_ratio(const RgbImage& image) {
     glm::dvec2 mean(0.0);
     for (const glm::dvec2& p : pixels) mean += p / static_cast<double>(pixels.size());
     double xx = 0.0, xy = 0.0, yy = 0.0;
-    for (const glm::dvec2& p : pixels) xx += (p.x - mean.x) * (p.x - mean.x), xy += (p.x - mean.x) * (p.y - mean.y),
-                                       yy += (p.y - mean.y) * (p.y - mean.y);
+    for (const glm::dvec2& p : pixels)
+        xx += (p.x - mean.x) * (p.x - mean.x), xy += (p.x - mean.x) * (p.y - mean.y),
+            yy += (p.y - mean.y) * (p.y - mean.y);
     const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);  // the covariance's principal direction
     const glm::dvec2 along(std::cos(angle), std::sin(angle)), across(-along.y, along.x);
     double t_min = 1e300, t_max = -1e300;
-    for (const glm::dvec2& p : pixels) t_min = std::min(t_min, glm::dot(p, along)), t_max = std::max(t_max, glm::dot(p, along));
+    for (const glm::dvec2& p : pixels)
+        t_min = std::min(t_min, glm::dot(p, along)), t_max = std::max(t_max, glm::dot(p, along));
     auto width_at = [&](double from, double to) {
         double lo = 1e300, hi = -1e300;
         for (const glm::dvec2& p : pixels)
@@ -186,8 +189,9 @@ TEST(PplsView, SceneIsOptionalAndCutToTheFramedRegion) {
     const Inspection in = inspect_box_on_plane("lispsm");
     const RgbImage with =
         render_view(in, ViewKind::ppls, {.step = "warp", .preset = SpacePreset::from_light}, kWidth, kHeight);
-    const RgbImage without = render_view(
-        in, ViewKind::ppls, {.step = "warp", .preset = SpacePreset::from_light, .scene_in_ppls = false}, kWidth, kHeight);
+    const RgbImage without =
+        render_view(in, ViewKind::ppls, {.step = "warp", .preset = SpacePreset::from_light, .scene_in_ppls = false},
+                    kWidth, kHeight);
     const std::optional<SpaceFrame> frame = space_frame(in, ViewKind::ppls, in.trace.find("warp"));
     ASSERT_TRUE(frame);
     // The map's volume is the region: its square's pixels give the scale of the margin.

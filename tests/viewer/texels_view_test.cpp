@@ -41,7 +41,7 @@ Nearest nearest_triangle(const WorldTriangles& scene, const glm::dvec3& p, doubl
         const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
         const double distance = std::abs(glm::dot(p - a, n));
         const glm::dvec3 q = p - glm::dot(p - a, n) * n;  // on the plane
-        bool inside = true;  // on the inner side of each edge, within the slack
+        bool inside = true;                               // on the inner side of each edge, within the slack
         for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}})
             inside = inside && glm::dot(glm::cross(to - from, q - from), n) >= -slack * glm::length(to - from);
         if (inside && distance < nearest.distance) nearest = {distance, static_cast<int>(t)};
@@ -79,7 +79,8 @@ std::vector<std::string> texts_of(const Inspection& in, ViewKind view, int width
 }
 
 bool any_contains(const std::vector<std::string>& texts, const std::string& part) {
-    return std::any_of(texts.begin(), texts.end(), [&](const std::string& t) { return t.find(part) != std::string::npos; });
+    return std::any_of(texts.begin(), texts.end(),
+                       [&](const std::string& t) { return t.find(part) != std::string::npos; });
 }
 
 // The first map's two tones, drawn unlit: warm and saturated, brighter than any dimmed scene colour.

@@ -12,8 +12,8 @@ struct CameraPose {
     glm::dvec3 position{0.0};
     glm::dvec3 focal_point{0.0};
     glm::dvec3 view_up{0.0, 1.0, 0.0};
-    double view_angle = 30.0;      // degrees, perspective
-    double parallel_scale = 1.0;   // half the height seen, orthographic
+    double view_angle = 30.0;     // degrees, perspective
+    double parallel_scale = 1.0;  // half the height seen, orthographic
     bool parallel_projection = false;
 
     static CameraPose of(vtkCamera* camera);

@@ -95,12 +95,14 @@ ControlsPanel::ControlsPanel(QWidget* parent)
                              Qt::ToolTipRole);
     }
     camera_in_shadow_->setObjectName("cameraInShadow");
-    camera_in_shadow_->setToolTip("move the camera into a caster's shadow volume: z-pass counts go wrong there, z-fail holds");
+    camera_in_shadow_->setToolTip(
+        "move the camera into a caster's shadow volume: z-pass counts go wrong there, z-fail holds");
     aspect_->setObjectName("aspect");
     aspect_->addItem("scene (locked)", true);
     aspect_->addItem("Camera panel", false);
-    aspect_->setToolTip("the camera's aspect the method computes with: the scene's, as `shadowlab inspect` does (the "
-                        "Camera panel letterboxes), or the Camera panel's shape");
+    aspect_->setToolTip(
+        "the camera's aspect the method computes with: the scene's, as `shadowlab inspect` does (the "
+        "Camera panel letterboxes), or the Camera panel's shape");
     shadow_only_->setObjectName("shadowOnly");
     shadow_only_->setToolTip("the Camera view's shadows alone: white where lit, black where shadowed");
     method_->setCurrentText("focused");
@@ -111,7 +113,9 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     bias_->setSingleStep(0.005);
     bias_->setSpecialValueText("slope-scaled");  // the minimum: per pixel, as the metrics use
     bias_->setValue(bias_->minimum());
-    bias_->setToolTip("depth bias in world units along the light; 'slope-scaled' = the texel's world size times 1 + tan θ, per pixel");
+    bias_->setToolTip(
+        "depth bias in world units along the light; 'slope-scaled' = the texel's world size times 1 + tan θ, per "
+        "pixel");
     azimuth_->setToolTip("light azimuth (degrees about +y)");
     elevation_->setToolTip("light elevation (degrees above the horizon)");
     new QVBoxLayout(settings_box_);
@@ -144,11 +148,12 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     connect(aspect_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &ControlsPanel::aspectChanged);
     connect(shadow_only_, &QCheckBox::toggled, this, &ControlsPanel::shadowOnlyToggled);
     connect(bias_, &QDoubleSpinBox::editingFinished, this, &ControlsPanel::changed);
-    for (QSlider* s : {azimuth_, elevation_}) connect(s, &QSlider::valueChanged, this, [this] {
-        const glm::dvec3 d = light_direction();
-        light_label_->setText(QString("(%1, %2, %3)").arg(d.x, 0, 'f', 3).arg(d.y, 0, 'f', 3).arg(d.z, 0, 'f', 3));
-        emit lightChanged();
-    });
+    for (QSlider* s : {azimuth_, elevation_})
+        connect(s, &QSlider::valueChanged, this, [this] {
+            const glm::dvec3 d = light_direction();
+            light_label_->setText(QString("(%1, %2, %3)").arg(d.x, 0, 'f', 3).arg(d.y, 0, 'f', 3).arg(d.z, 0, 'f', 3));
+            emit lightChanged();
+        });
 }
 
 // The method's own settings, then its lookup's under two headers in the same form (its labels in
@@ -252,7 +257,8 @@ void ControlsPanel::set_light_direction(const glm::dvec3& direction) {
     const QSignalBlocker block_a(azimuth_), block_e(elevation_);
     elevation_->setValue(static_cast<int>(std::lround(angles.elevation_deg)));
     azimuth_->setValue(static_cast<int>(std::lround(angles.azimuth_deg)) % 360);
-    light_label_->setText(QString("(%1, %2, %3)").arg(direction.x, 0, 'f', 3).arg(direction.y, 0, 'f', 3).arg(direction.z, 0, 'f', 3));
+    light_label_->setText(
+        QString("(%1, %2, %3)").arg(direction.x, 0, 'f', 3).arg(direction.y, 0, 'f', 3).arg(direction.z, 0, 'f', 3));
 }
 
 bool ControlsPanel::camera_in_shadow() const { return camera_in_shadow_->isChecked(); }

@@ -38,8 +38,8 @@ public:
     void set_resolution(int resolution);
     QComboBox* method_selector() const { return method_; }
     bool camera_in_shadow() const;
-    bool aspect_locked() const;  // the scene camera's aspect, as the CLI computes; else the Camera panel's
-    bool shadow_only() const;    // the Camera view as a lit mask: white lit, black shadowed
+    bool aspect_locked() const;     // the scene camera's aspect, as the CLI computes; else the Camera panel's
+    bool shadow_only() const;       // the Camera view as a lit mask: white lit, black shadowed
     void clear_camera_in_shadow();  // without emitting cameraInShadowToggled()
 
 signals:

@@ -63,8 +63,9 @@ StepPlayer::StepPlayer(QWidget* parent)
     layout_->setObjectName("matrixLayout");
     layout_->addItem("as computed (column vectors)", static_cast<int>(MatrixLayout::column_vectors));
     layout_->addItem("as the papers print them (row vectors)", static_cast<int>(MatrixLayout::row_vectors));
-    layout_->setToolTip("ShadowLab computes with column vectors (GLM, p' = M p); the papers use Direct3D's row "
-                        "vectors (p' = p M) and print the transpose");
+    layout_->setToolTip(
+        "ShadowLab computes with column vectors (GLM, p' = M p); the papers use Direct3D's row "
+        "vectors (p' = p M) and print the transpose");
     auto* previous = new QPushButton("◀", this);
     auto* next = new QPushButton("▶", this);
     auto* copy = new QPushButton("Copy values", this);
@@ -88,7 +89,8 @@ StepPlayer::StepPlayer(QWidget* parent)
     });
     connect(layout_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &StepPlayer::show_details);
     connect(previous, &QPushButton::clicked, this, [this] { choose(std::max(0, list_->currentRow() - 1)); });
-    connect(next, &QPushButton::clicked, this, [this] { choose(std::min(list_->count() - 1, list_->currentRow() + 1)); });
+    connect(next, &QPushButton::clicked, this,
+            [this] { choose(std::min(list_->count() - 1, list_->currentRow() + 1)); });
     connect(copy, &QPushButton::clicked, this, &StepPlayer::copy_values);
     connect(play_, &QPushButton::clicked, this, [this] {
         if (timer_->isActive()) return timer_->stop(), play_->setText("Play");
@@ -133,8 +135,8 @@ void StepPlayer::set_trace(const Trace& trace) {
         const Step& s = trace.steps()[i];
         auto* item = new QListWidgetItem(QString("%1. %2").arg(i + 1).arg(QString::fromStdString(s.title)), list_);
         item->setData(Qt::UserRole, QString::fromStdString(s.id));
-        item->setToolTip(QString("%1 (%2, %3 space)").arg(QString::fromStdString(s.title), QString::fromStdString(s.id),
-                                                          to_string(s.space)));
+        item->setToolTip(QString("%1 (%2, %3 space)")
+                             .arg(QString::fromStdString(s.title), QString::fromStdString(s.id), to_string(s.space)));
         if (QString::fromStdString(s.id) == before) row = static_cast<int>(i);
     }
     list_->updateGeometry();  // another count of rows, another height
@@ -166,8 +168,9 @@ void StepPlayer::show_details() {
     explanation_->setText("<b>" + QString::fromStdString(step->title).toHtmlEscaped() + "</b> — " +
                           QString::fromStdString(step->explanation).toHtmlEscaped() +
                           (geometry.isEmpty() ? "" : "<br><i>drawn: " + geometry.toHtmlEscaped() + "</i>"));
-    const bool has_matrix = std::any_of(step->values.begin(), step->values.end(),
-                                        [](const NamedValue& v) { return std::holds_alternative<glm::dmat4>(v.value); });
+    const bool has_matrix = std::any_of(step->values.begin(), step->values.end(), [](const NamedValue& v) {
+        return std::holds_alternative<glm::dmat4>(v.value);
+    });
     layout_note_->setText(has_matrix ? QString("<i>%1</i>").arg(layout_note(matrix_layout())) : QString());
     layout_note_->setVisible(has_matrix);
     // Names beside numbers and vectors; a matrix on the rows below its name, as wide as the area.

@@ -31,7 +31,7 @@ public:
     void set_view(ViewKind view);
     SpacePreset preset() const;
     void set_preset(SpacePreset preset);
-    void forget_camera();  // the next redraw places the view's default camera (a new scene)
+    void forget_camera();        // the next redraw places the view's default camera (a new scene)
     QSize drawing_size() const;  // the VTK widget's, without the choosers
     // `options` completed by the panel's choosers and size, for a camera of `aspect`: what show draws with.
     ViewOptions options_for(const ViewOptions& options, double aspect) const;
@@ -81,7 +81,7 @@ private:
     vtkRenderer* scene_renderer_ = nullptr;  // the view's own, the first of the window's renderers
     enum class Drawing { done, render, present };
     Drawing drawing_ = Drawing::done;
-    glm::dvec3 camera_origin_{0.0};          // the Camera view's coordinates are relative to it
+    glm::dvec3 camera_origin_{0.0};  // the Camera view's coordinates are relative to it
 };
 
 }  // namespace shadowlab

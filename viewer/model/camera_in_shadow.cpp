@@ -25,8 +25,8 @@ bool clear_of_objects(const Scene& scene, const glm::dvec3& p) {
 std::optional<glm::dvec3> spot_behind(const Scene& scene, const SceneObject& caster, double ground) {
     const Aabb box = caster.world_bounds();
     const glm::dvec3 q = 0.5 * (box.min + box.max) + glm::dvec3(0.0, 0.45 * (box.max.y - box.min.y), 0.0);
-    const glm::dvec3 d = scene.light.is_directional() ? glm::normalize(scene.light.direction)
-                                                      : glm::normalize(q - scene.light.position);
+    const glm::dvec3 d =
+        scene.light.is_directional() ? glm::normalize(scene.light.direction) : glm::normalize(q - scene.light.position);
     const glm::dvec3 p = q + (exit_distance(box, q, d) + 0.25 * box.diagonal()) * d;
     if (p.y < ground + 0.1 * box.diagonal() || !clear_of_objects(scene, p)) return std::nullopt;
     return p;

@@ -37,7 +37,8 @@ constexpr size_t kSizesKept = 3;  // a resized window asks for new sizes: the ol
 Inspection::Judged& Inspection::judged(int width, int height) const {
     if (!judged_) judged_ = std::make_shared<std::deque<Judged>>();
     std::deque<Judged>& kept = *judged_;
-    const auto found = std::find_if(kept.begin(), kept.end(), [&](const Judged& j) { return j.width == width && j.height == height; });
+    const auto found =
+        std::find_if(kept.begin(), kept.end(), [&](const Judged& j) { return j.width == width && j.height == height; });
     if (found != kept.end()) return *found;
     kept.push_front({width, height, light_reference(scene, triangles, width, height), {}});
     if (kept.size() > kSizesKept) kept.pop_back();

@@ -32,8 +32,8 @@ struct Inspection {
     Scene scene;
     const Method* method = nullptr;
     Settings settings;
-    int resolution = 0;   // maps: texture texels per side
-    double bias = -1.0;   // world units along the light; < 0: slope-scaled per pixel (slope_scaled_bias)
+    int resolution = 0;  // maps: texture texels per side
+    double bias = -1.0;  // world units along the light; < 0: slope-scaled per pixel (slope_scaled_bias)
     int image_width = 0, image_height = 0;  // the camera image a technique was judged on, or the depth image read
     ShadowInputs inputs;
     Trace trace;

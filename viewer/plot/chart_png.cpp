@@ -118,10 +118,9 @@ void add_series(vtkChartXY& chart, const ChartSpec& spec, size_t index, Bounds& 
     const Rgb rgb = series_color(spec, index);
     vtkSmartPointer<vtkTable> table = make_table(kept);
     const bool line = s.line && kept.size() >= 2;  // a line needs two points; one is drawn as a point
-    vtkPlotPoints* plot = add_plot(chart, line ? vtkChart::LINE : vtkChart::POINTS, table, rgb,
-                                   vtkPlotPoints::CIRCLE, line ? 6.0f : 8.0f);
-    plot->SetLabel(dropped == 0 ? s.name
-                                : s.name + " (" + std::to_string(dropped) + " non-positive dropped)");
+    vtkPlotPoints* plot = add_plot(chart, line ? vtkChart::LINE : vtkChart::POINTS, table, rgb, vtkPlotPoints::CIRCLE,
+                                   line ? 6.0f : 8.0f);
+    plot->SetLabel(dropped == 0 ? s.name : s.name + " (" + std::to_string(dropped) + " non-positive dropped)");
     plot->SetLegendVisibility(s.in_legend);
     if (s.dashed) plot->GetPen()->SetLineType(vtkPen::DASH_LINE);
     if (!marked.empty())
@@ -154,9 +153,16 @@ void pad_axis(vtkAxis* axis, double lo, double hi, bool log) {
 }  // namespace
 
 std::array<unsigned char, 3> palette_color(size_t index) {
-    static constexpr std::array<Rgb, 10> palette{{{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
-                                                  {148, 103, 189}, {140, 86, 75}, {227, 119, 194},
-                                                  {127, 127, 127}, {188, 189, 34}, {23, 190, 207}}};
+    static constexpr std::array<Rgb, 10> palette{{{31, 119, 180},
+                                                  {255, 127, 14},
+                                                  {44, 160, 44},
+                                                  {214, 39, 40},
+                                                  {148, 103, 189},
+                                                  {140, 86, 75},
+                                                  {227, 119, 194},
+                                                  {127, 127, 127},
+                                                  {188, 189, 34},
+                                                  {23, 190, 207}}};
     return palette[index % palette.size()];
 }
 

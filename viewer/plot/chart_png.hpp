@@ -7,11 +7,11 @@
 namespace shadowlab {
 
 struct ChartSeries {
-    std::string name;                 // the legend entry
-    std::vector<double> x, y;         // same length
-    std::vector<std::string> labels;  // optional: one text per point, drawn beside it
-    bool line = true;                 // points joined by a line (else points only)
-    std::vector<bool> marked;         // optional: per point, also drawn with a cross (e.g. fallbacks)
+    std::string name;                             // the legend entry
+    std::vector<double> x, y;                     // same length
+    std::vector<std::string> labels;              // optional: one text per point, drawn beside it
+    bool line = true;                             // points joined by a line (else points only)
+    std::vector<bool> marked;                     // optional: per point, also drawn with a cross (e.g. fallbacks)
     std::array<unsigned char, 3> color{0, 0, 0};  // RGB; {0, 0, 0} picks from a palette by series index
     bool dashed = false;    // the line drawn dashed (a second quantity of the same subject, same colour)
     bool in_legend = true;  // false: no legend entry (a mark that annotates another series)

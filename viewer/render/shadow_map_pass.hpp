@@ -44,7 +44,7 @@ public:
     static ShadowMapPass* New();
     vtkTypeMacro(ShadowMapPass, vtkOpenGLRenderPass);
 
-    static constexpr int kMaxMaps = 8;  // the shaders' uniform arrays hold this many maps
+    static constexpr int kMaxMaps = 8;   // the shaders' uniform arrays hold this many maps
     static constexpr int kMaxTaps = 81;  // and this many filter taps: kernel_size <= 9
 
     // What stage 2 writes: the surface shading (render/surface_shading.hpp), shadow tinted; white
@@ -100,8 +100,8 @@ private:
     Output output_ = Output::shaded;
     MapOverlay overlay_ = MapOverlay::none;
     std::vector<glm::vec3> ramp_{glm::vec3(0.0f), glm::vec3(1.0f)};
-    ShadowSetup setup_;   // no maps until SetSetup: everything lit
-    int drawn_map_ = 0;   // stage 1: the map whose tile is being drawn
+    ShadowSetup setup_;  // no maps until SetSetup: everything lit
+    int drawn_map_ = 0;  // stage 1: the map whose tile is being drawn
     ShadowLookup lookup_;
     Light light_;
     std::vector<glm::vec3> taps_;  // the filter's taps as (offset, weight); empty for vsm, evsm

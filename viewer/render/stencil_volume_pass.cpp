@@ -55,9 +55,7 @@ void set_stencil_ops(vtkOpenGLState* gl, StencilRule rule) {
             gl->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
             gl->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
             break;
-        case StencilRule::cover:
-            gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-            break;
+        case StencilRule::cover: gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE); break;
     }
 }
 
@@ -66,12 +64,16 @@ void set_stencil_ops(vtkOpenGLState* gl, StencilRule rule) {
 // capable but attaches it as depth only: that texture is attached as the stencil buffer too.
 bool attach_stencil_buffer() {
     GLint type = GL_NONE, bits = 0, name = 0;
-    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
     if (type != GL_NONE) return true;
-    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
     if (type != GL_TEXTURE) return false;
-    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
-    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
     if (bits <= 0) return false;
     // Any texture target: the window's textures are multisampled when it is (the Qt widget's are).
     glFramebufferTexture(GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, static_cast<GLuint>(name), 0);
@@ -145,7 +147,8 @@ void StencilVolumePass::Render(const vtkRenderState* s) {
             gl->vtkglStencilFunc(GL_ALWAYS, 0, ~0u);
             gl->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         } else {
-            vtkWarningMacro("the render window has no stencil buffer (SetStencilCapable(1) before its first render): no shadows");
+            vtkWarningMacro(
+                "the render window has no stencil buffer (SetStencilCapable(1) before its first render): no shadows");
         }
     }
     PostRender(s);
@@ -226,7 +229,8 @@ void StencilVolumePass::shade_shadowed(const vtkRenderState* s, vtkOpenGLState* 
 bool StencilVolumePass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment,
                                                vtkAbstractMapper*, vtkProp*) {
     pass_world_position(vertex);
-    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\nuniform float surfaceLit;\n", false);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\nuniform float surfaceLit;\n",
+                                 false);
     declare_surface_shading(fragment);
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", kShade, false);
     return true;

@@ -34,15 +34,16 @@ vec4 surfaceColour(vec3 ambient, vec3 diffuse, float opacity, vec3 p, vec3 n, fl
 }  // namespace
 
 void pass_world_position(std::string& vertex) {
-    vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec", "//VTK::PositionVC::Dec\nout vec4 surfaceWorldVSOutput;\n",
-                                 false);
+    vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
+                                 "//VTK::PositionVC::Dec\nout vec4 surfaceWorldVSOutput;\n", false);
     vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Impl",
                                  "//VTK::PositionVC::Impl\n  surfaceWorldVSOutput = vertexMC;\n", false);
 }
 
 void declare_surface_shading(std::string& fragment) {
     const std::string tint = "const vec3 shadowTint = " + glsl_vec3(kShadowTint) + ";\n";
-    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + tint + kShadingFunctions, false);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + tint + kShadingFunctions,
+                                 false);
 }
 
 bool set_surface_shading_uniforms(vtkShaderProgram* program, const ShadingFrame& frame, bool lit_mask) {

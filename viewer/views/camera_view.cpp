@@ -67,7 +67,10 @@ void add_cascade_legend(vtkRenderer* renderer, const ShadowSetup& setup) {
 
 void add_texels_legend(vtkRenderer* renderer) {
     std::vector<LegendEntry> entries;
-    for (const auto& [texels, text] : {std::pair{8.0, "8 texels per pixel"}, {2.0, "2"}, {1.0, "1"}, {0.5, "1/2"},
+    for (const auto& [texels, text] : {std::pair{8.0, "8 texels per pixel"},
+                                       {2.0, "2"},
+                                       {1.0, "1"},
+                                       {0.5, "1/2"},
                                        {0.125, "1/8 (a texel 8 pixels wide)"}})
         entries.push_back({unit_colour(heat(texels_ramp_position(texels))), text});
     add_legend(renderer, entries);

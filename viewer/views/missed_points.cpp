@@ -10,7 +10,7 @@
 namespace shadowlab {
 namespace {
 
-constexpr int kMarksWidth = 96;   // image pixels across: enough to show where, cheap to trace
+constexpr int kMarksWidth = 96;  // image pixels across: enough to show where, cheap to trace
 constexpr double kTolerance = 1e-6;
 
 bool covered(const ShadowSetup& setup, const glm::dvec3& p) {

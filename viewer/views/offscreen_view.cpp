@@ -14,7 +14,7 @@ RgbImage render_view(const Inspection& inspection, ViewKind view, const ViewOpti
     window->SetInteractor(nullptr);
     window->SetDisplayId(x.handle());
     window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);  // pixel tests compare exact colours
+    window->SetMultiSamples(0);    // pixel tests compare exact colours
     window->SetStencilCapable(1);  // the stencil shadow pass (before the first render)
     window->SetSize(width, height);
     vtkNew<vtkRenderer> renderer;

@@ -148,7 +148,8 @@ std::vector<std::vector<glm::dvec3>> face_loops(const PolygonSet& set, double re
             const glm::dvec4& after = set.vertices[polygon[(i + 1) % n]];
             const glm::dvec4& anchor = v.w != 0.0 ? v : before.w != 0.0 ? before : after;
             if (anchor.w == 0.0) break;
-            loop.push_back(glm::dvec3(anchor) / anchor.w + (v.w != 0.0 ? glm::dvec3(0.0) : reach * glm::normalize(glm::dvec3(v))));
+            loop.push_back(glm::dvec3(anchor) / anchor.w +
+                           (v.w != 0.0 ? glm::dvec3(0.0) : reach * glm::normalize(glm::dvec3(v))));
         }
         if (loop.size() == n) loops.push_back(loop);
     }
@@ -182,7 +183,9 @@ Placed arc_polyline(const AngleArc& arc, const Placement& placement) {
     const glm::dvec3 across = b - glm::dot(a, b) * a;
     const glm::dvec3 side = glm::length(across) > 0.0 ? glm::normalize(across) : a;
     std::vector<std::pair<glm::dvec3, glm::dvec3>> pieces;
-    auto at = [&](int i) { return arc.centre + arc.radius * (std::cos(angle * i / 32.0) * a + std::sin(angle * i / 32.0) * side); };
+    auto at = [&](int i) {
+        return arc.centre + arc.radius * (std::cos(angle * i / 32.0) * a + std::sin(angle * i / 32.0) * side);
+    };
     for (int i = 0; i < 32; ++i) pieces.push_back({at(i), at(i + 1)});
     return edges(placement, pieces);
 }
@@ -233,9 +236,12 @@ std::optional<glm::dvec3> placed_point(const Placement& placement, const glm::dv
 }
 
 std::vector<glm::dvec3> object_colours(const Scene& scene) {
-    static constexpr std::array<std::array<double, 3>, 6> palette{
-        {{0.85, 0.62, 0.45}, {0.62, 0.71, 0.84}, {0.86, 0.80, 0.55}, {0.70, 0.82, 0.66}, {0.82, 0.66, 0.76},
-         {0.75, 0.75, 0.78}}};
+    static constexpr std::array<std::array<double, 3>, 6> palette{{{0.85, 0.62, 0.45},
+                                                                   {0.62, 0.71, 0.84},
+                                                                   {0.86, 0.80, 0.55},
+                                                                   {0.70, 0.82, 0.66},
+                                                                   {0.82, 0.66, 0.76},
+                                                                   {0.75, 0.75, 0.78}}};
     std::vector<glm::dvec3> colours;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const auto& c = palette[i % palette.size()];
@@ -291,16 +297,24 @@ Placed geometry_polydata(const TraceGeometry& geometry, const Placement& placeme
     return std::visit(
         [&](const auto& g) -> Placed {
             using G = std::decay_t<decltype(g)>;
-            if constexpr (std::is_same_v<G, PointSet>) return points_polydata(g.points, placement);
+            if constexpr (std::is_same_v<G, PointSet>)
+                return points_polydata(g.points, placement);
             else if constexpr (std::is_same_v<G, Aabb>)
                 return boxes_polydata({g}, placement);
-            else if constexpr (std::is_same_v<G, ConvexPolyhedron>) return faces(g, placement);
-            else if constexpr (std::is_same_v<G, SegmentSet>) return edges(placement, g.segments);
-            else if constexpr (std::is_same_v<G, PolygonSet>) return faces(g, placement);
-            else if constexpr (std::is_same_v<G, Arrow>) return arrow_shape(g, placement);
-            else if constexpr (std::is_same_v<G, AngleArc>) return arc_polyline(g, placement);
-            else if constexpr (std::is_same_v<G, Label>) return points_polydata({g.at}, placement);
-            else return frustum_edges(g, placement);
+            else if constexpr (std::is_same_v<G, ConvexPolyhedron>)
+                return faces(g, placement);
+            else if constexpr (std::is_same_v<G, SegmentSet>)
+                return edges(placement, g.segments);
+            else if constexpr (std::is_same_v<G, PolygonSet>)
+                return faces(g, placement);
+            else if constexpr (std::is_same_v<G, Arrow>)
+                return arrow_shape(g, placement);
+            else if constexpr (std::is_same_v<G, AngleArc>)
+                return arc_polyline(g, placement);
+            else if constexpr (std::is_same_v<G, Label>)
+                return points_polydata({g.at}, placement);
+            else
+                return frustum_edges(g, placement);
         },
         geometry);
 }

@@ -1,6 +1,7 @@
 // The one table of what a shape's role looks like in the World, Light space and PPLS views: the
 // papers' colours (casters blue, receivers red, the focus region green), the light orange, the map's
-// volume cyan, the camera white (a touch of blue: never the grey of anti-aliased text), and the step's own construction the highlight yellow.
+// volume cyan, the camera white (a touch of blue: never the grey of anti-aliased text), and the step's own construction
+// the highlight yellow.
 #include <stdexcept>
 
 #include "render/map_overlay.hpp"
@@ -13,8 +14,7 @@ const glm::dvec3 kSpaceBackground{0.12, 0.13, 0.16};
 const RoleStyle& role_style(Role role) {
     static const RoleStyle step{{1.0, 0.9, 0.1}, "this step"}, casters{{0.3, 0.5, 1.0}, "casters"},
         receivers{{1.0, 0.3, 0.3}, "receivers"}, focus{{0.3, 0.9, 0.35}, "focus region"},
-        light{{1.0, 0.5, 0.0}, "light"}, view{{0.88, 0.92, 1.0}, "camera"},
-        map{{0.3, 0.9, 1.0}, "map volume [0,1]³"};
+        light{{1.0, 0.5, 0.0}, "light"}, view{{0.88, 0.92, 1.0}, "camera"}, map{{0.3, 0.9, 1.0}, "map volume [0,1]³"};
     switch (role) {
         case Role::step: return step;
         case Role::casters: return casters;

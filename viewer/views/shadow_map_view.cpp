@@ -114,7 +114,8 @@ public:
     vtkSmartPointer<vtkActor> grid;
     void Execute(vtkObject* caller, unsigned long, void*) override {
         auto* renderer = static_cast<vtkRenderer*>(caller);
-        const double pixels_per_texel = renderer->GetSize()[1] / (2.0 * renderer->GetActiveCamera()->GetParallelScale());
+        const double pixels_per_texel =
+            renderer->GetSize()[1] / (2.0 * renderer->GetActiveCamera()->GetParallelScale());
         grid->SetVisibility(pixels_per_texel >= 8.0);
     }
 };
@@ -123,7 +124,8 @@ public:
 // the image actor, its tile where the viewport puts it; drawn just above the image.
 // The map's tile in texture pixels, around the drawing plane z = 1.
 Aabb tile_in_pixels(const ShadowMap& map, int n) {
-    return {{map.viewport.x * n - 0.5, map.viewport.y * n - 0.5, 0.5}, {map.viewport.z * n - 0.5, map.viewport.w * n - 0.5, 1.5}};
+    return {{map.viewport.x * n - 0.5, map.viewport.y * n - 0.5, 0.5},
+            {map.viewport.z * n - 0.5, map.viewport.w * n - 0.5, 1.5}};
 }
 
 glm::dmat4 pixels_from_world(const ShadowMap& map, int n) {
@@ -156,11 +158,13 @@ void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
         const Aabb tile = tile_in_pixels(setup.maps[i], n);
         const glm::dvec3 a(tile.min.x, tile.min.y, 0.6), b(tile.max.x, tile.min.y, 0.6), c(tile.max.x, tile.max.y, 0.6),
             d(tile.min.x, tile.max.y, 0.6);
-        for (const auto& edge : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}}) edges.push_back(edge);
+        for (const auto& edge : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}})
+            edges.push_back(edge);
         if (setup.maps[i].projection == Projection::paraboloid) add_disc_rim(tile, edges);
         const auto side = static_cast<int>(std::lround(tile_resolution(setup.maps[i], n)));
         const std::string text = map_name(setup, i) + "\n" + std::to_string(side) + "²";
-        if (setup.maps[i].projection == Projection::paraboloid)  // in the corner the disc leaves empty, under the legend
+        if (setup.maps[i].projection ==
+            Projection::paraboloid)  // in the corner the disc leaves empty, under the legend
             add_world_label(renderer, a, text, 14, kTileBorder, {6, 6});
         else
             add_world_label(renderer, d, text, 14, kTileBorder, {6, -40});  // inside the tile, below its top edge
@@ -434,7 +438,8 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
     toggle->grid = actor_for(texel_grid(n), glm::dvec3(0.35, 0.55, 0.85));
     renderer->AddActor(toggle->grid);
     renderer->AddObserver(vtkCommand::StartEvent, toggle);
-    const std::string maps = in.setup.maps.size() > 1 ? ", " + std::to_string(in.setup.maps.size()) + " maps in tiles" : "";
+    const std::string maps =
+        in.setup.maps.size() > 1 ? ", " + std::to_string(in.setup.maps.size()) + " maps in tiles" : "";
     const std::string cross =
         n != in.resolution ? " (stored as 3 x 2, shown unfolded as a cross: +y above, -x +z +x -z across, -y below)"
                            : "";

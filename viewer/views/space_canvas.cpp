@@ -35,7 +35,8 @@ void SpaceCanvas::label(const glm::dvec3& at, const std::string& text, const glm
 
 void SpaceCanvas::list(const glm::dvec3& colour, const std::string& legend) {
     if (legend.empty()) return;
-    const bool listed = std::any_of(legend_.begin(), legend_.end(), [&](const LegendEntry& e) { return e.text == legend; });
+    const bool listed =
+        std::any_of(legend_.begin(), legend_.end(), [&](const LegendEntry& e) { return e.text == legend; });
     if (!listed) legend_.push_back({colour, legend});
 }
 

@@ -84,10 +84,14 @@ std::vector<glm::dvec3> shape_points(const TraceGeometry& geometry) {
     return std::visit(
         [](const auto& g) -> std::vector<glm::dvec3> {
             using G = std::decay_t<decltype(g)>;
-            if constexpr (std::is_same_v<G, PointSet>) return g.points;
-            else if constexpr (std::is_same_v<G, Aabb>) return {g.min, g.max};
-            else if constexpr (std::is_same_v<G, ConvexPolyhedron>) return g.vertices;
-            else if constexpr (std::is_same_v<G, Frustum>) return {g.corners.begin(), g.corners.end()};
+            if constexpr (std::is_same_v<G, PointSet>)
+                return g.points;
+            else if constexpr (std::is_same_v<G, Aabb>)
+                return {g.min, g.max};
+            else if constexpr (std::is_same_v<G, ConvexPolyhedron>)
+                return g.vertices;
+            else if constexpr (std::is_same_v<G, Frustum>)
+                return {g.corners.begin(), g.corners.end()};
             else if constexpr (std::is_same_v<G, SegmentSet>) {
                 std::vector<glm::dvec3> ends;
                 for (const auto& [a, b] : g.segments) ends.insert(ends.end(), {a, b});
@@ -97,9 +101,12 @@ std::vector<glm::dvec3> shape_points(const TraceGeometry& geometry) {
                 for (const glm::dvec4& v : g.vertices)
                     if (v.w != 0.0) finite.push_back(glm::dvec3(v) / v.w);
                 return finite;
-            } else if constexpr (std::is_same_v<G, Arrow>) return {g.from, g.to};
-            else if constexpr (std::is_same_v<G, AngleArc>) return {g.centre};
-            else return {g.at};  // Label
+            } else if constexpr (std::is_same_v<G, Arrow>)
+                return {g.from, g.to};
+            else if constexpr (std::is_same_v<G, AngleArc>)
+                return {g.centre};
+            else
+                return {g.at};  // Label
         },
         geometry);
 }
@@ -187,8 +194,8 @@ std::optional<SpaceFrame> space_frame(const Inspection& in, ViewKind view, const
     const glm::dvec4 centre_h = glm::inverse(frame.from_world) * glm::dvec4(frame.region.center(), 1.0);
     const glm::dvec3 centre = glm::dvec3(centre_h) / centre_h.w;
     const Scene& scene = in.scene;
-    const glm::dvec3 light_world = scene.light.is_directional() ? scene.light.direction
-                                                                : glm::normalize(centre - scene.light.position);
+    const glm::dvec3 light_world =
+        scene.light.is_directional() ? scene.light.direction : glm::normalize(centre - scene.light.position);
     const double step = 1e-4 * std::max(scene.bounds().diagonal(), 1e-9);
     // The atlas is seen from in front of its (u, v) plane, as the Shadow map view shows the texture: u right, v up.
     frame.light =

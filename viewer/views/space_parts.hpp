@@ -18,12 +18,12 @@ std::optional<glm::dmat4> world_to(const Inspection& in, Space space);
 
 // The space one view draws in, and what its camera frames there.
 struct SpaceFrame {
-    Space space = Space::world;  // world, light, or ppls (the unit space for a map with no warp)
-    glm::dmat4 from_world{1.0};  // world -> space, homogeneous
-    Aabb region;                 // what matters: the scene (World), the body B (Light), the map's volume (PPLS)
-    Aabb clip;                   // the region and a margin: nothing is drawn beyond it; the cameras frame it
-    glm::dvec3 light{0, 0, 1};   // the light's direction in the space at the region's centre, unit
-    glm::dvec3 view{0, 1, 0};    // the camera's view direction carried likewise, unit
+    Space space = Space::world;       // world, light, or ppls (the unit space for a map with no warp)
+    glm::dmat4 from_world{1.0};       // world -> space, homogeneous
+    Aabb region;                      // what matters: the scene (World), the body B (Light), the map's volume (PPLS)
+    Aabb clip;                        // the region and a margin: nothing is drawn beyond it; the cameras frame it
+    glm::dvec3 light{0, 0, 1};        // the light's direction in the space at the region's centre, unit
+    glm::dvec3 view{0, 1, 0};         // the camera's view direction carried likewise, unit
     glm::dvec3 light_from, light_to;  // the light arrow, in the space
     bool atlas = false;  // the atlas of paraboloid maps (unit_space_is_an_atlas): a picture, seen straight on
 

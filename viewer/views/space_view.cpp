@@ -53,8 +53,8 @@ void draw_light_and_axes(SpaceCanvas& canvas) {
     const SpaceFrame& frame = canvas.frame();
     const Placement in_space{.clip = frame.clip, .head = frame.arrow_head()};
     const RoleStyle& light = role_style(Role::light);
-    canvas.draw(geometry_polydata(Arrow{frame.light_from, frame.light_to}, in_space), {.colour = light.colour, .width = 3.0},
-                light.legend);
+    canvas.draw(geometry_polydata(Arrow{frame.light_from, frame.light_to}, in_space),
+                {.colour = light.colour, .width = 3.0}, light.legend);
     canvas.label(0.5 * (frame.light_from + frame.light_to), "light", light.colour);
     const double length = 0.15 * frame.scale();
     const char* names[3] = {"x", "y", "z"};
@@ -122,7 +122,8 @@ std::string values_text(const Step& step) {
 }
 
 // "PPLS · lispsm · Step 8 of 10 · Perspective warp P", the step's formula, its values.
-std::string caption(const Inspection& in, ViewKind view, const SpaceFrame& frame, const ViewOptions& options, size_t chosen) {
+std::string caption(const Inspection& in, ViewKind view, const SpaceFrame& frame, const ViewOptions& options,
+                    size_t chosen) {
     std::string title = view_title(view);
     if (frame.atlas)
         title += " (the atlas: paraboloids reach it by no matrix)";
@@ -147,9 +148,10 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKin
     const std::vector<Step>& steps = in.trace.steps();
     const std::optional<SpaceFrame> frame = space_frame(in, view, chosen < steps.size() ? &steps[chosen] : nullptr);
     if (!frame) {
-        add_caption(renderer, in.title() + ": no " + view_title(view) +
-                                  (in.has_map() ? " (the method has no such space)"
-                                                : " (a geometric technique: no light space, no map; see the World view)"));
+        add_caption(renderer,
+                    in.title() + ": no " + view_title(view) +
+                        (in.has_map() ? " (the method has no such space)"
+                                      : " (a geometric technique: no light space, no map; see the World view)"));
         return report;
     }
     // Drawn in layers, each over the one before where lines coincide: what earlier steps built,

@@ -13,7 +13,8 @@ const glm::dvec3 kEarlierStep{0.55, 0.62, 0.78};
 const char* const kEarlierLegend = "earlier steps";
 
 Stroke stroke_for(const NamedGeometry& g, bool current) {
-    const bool faces = std::holds_alternative<ConvexPolyhedron>(g.geometry) || std::holds_alternative<PolygonSet>(g.geometry);
+    const bool faces =
+        std::holds_alternative<ConvexPolyhedron>(g.geometry) || std::holds_alternative<PolygonSet>(g.geometry);
     // Silhouette edges stay thick after their step: they lie on the meshes' own edges.
     const bool edges = std::holds_alternative<SegmentSet>(g.geometry);
     const glm::dvec3 earlier = g.role == Role::step && g.map < 0 ? kEarlierStep : dimmed(shape_colour(g));
@@ -25,7 +26,8 @@ Stroke stroke_for(const NamedGeometry& g, bool current) {
 void draw_shape(SpaceCanvas& canvas, const NamedGeometry& g, const ShadowSetup& setup, const Placement& placement,
                 bool current) {
     const Stroke stroke = stroke_for(g, current);
-    const bool drawn = canvas.draw(geometry_polydata(g.geometry, placement), stroke, current ? shape_legend(g, setup) : "");
+    const bool drawn =
+        canvas.draw(geometry_polydata(g.geometry, placement), stroke, current ? shape_legend(g, setup) : "");
     if (const auto outline = outline_polydata(g.geometry, placement))
         canvas.draw(*outline, {.colour = stroke.colour, .width = current ? 2.5 : 1.0}, "");
     if (drawn && !current) canvas.list(kEarlierStep, kEarlierLegend);

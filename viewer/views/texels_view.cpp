@@ -176,9 +176,9 @@ Placed texel_quads(const std::vector<WorldTexel>& texels, int stride, const glm:
 void draw_dim_scene(vtkRenderer* renderer, const Inspection& in, const glm::dmat4& local_from_world) {
     std::vector<glm::dvec3> colours = object_colours(in.scene);
     for (glm::dvec3& c : colours) c *= 0.4;
-    auto scene = actor_for(triangles_polydata(in.triangles, std::vector<bool>(in.scene.objects.size(), true), colours,
-                                              local_from_world),
-                           glm::dvec3(1.0));
+    auto scene = actor_for(
+        triangles_polydata(in.triangles, std::vector<bool>(in.scene.objects.size(), true), colours, local_from_world),
+        glm::dvec3(1.0));
     scene->GetProperty()->SetAmbient(0.7);  // faces away from the headlight stay legible
     scene->GetProperty()->SetDiffuse(0.5);
     renderer->AddActor(scene);
@@ -203,8 +203,10 @@ std::optional<double> texels_per_pixel(const std::vector<WorldTexel>& texels, Ca
         std::array<glm::dvec2, 4> corner;
         bool in_front = true;
         for (int k = 0; k < 4 && in_front; ++k)
-            if (const auto c = pixel(t.corners[k])) corner[k] = *c;
-            else in_front = false;
+            if (const auto c = pixel(t.corners[k]))
+                corner[k] = *c;
+            else
+                in_front = false;
         if (!in_front) continue;
         double twice = 0.0;  // the shoelace formula
         for (int k = 0; k < 4; ++k) twice += corner[k].x * corner[(k + 1) % 4].y - corner[(k + 1) % 4].x * corner[k].y;
@@ -225,12 +227,13 @@ std::string caption(const Inspection& in, size_t surface, size_t drawn, int stri
     const size_t maps = in.setup.maps.size();
     std::string text = "Texels — " + in.name() + ", " + std::to_string(in.resolution) + "² texture" +
                        (maps > 1 ? " of " + std::to_string(maps) + " maps, a colour each, each where it serves" : "") +
-                       ": " + std::to_string(surface) + " texels land on a surface (receivers too); " + ordinal(stride) +
-                       " drawn (" + std::to_string(drawn) + "), each as its footprint there\n";
+                       ": " + std::to_string(surface) + " texels land on a surface (receivers too); " +
+                       ordinal(stride) + " drawn (" + std::to_string(drawn) + "), each as its footprint there\n";
     if (density) {
         char mean[112];
-        std::snprintf(mean, sizeof mean, "%.2f texels per pixel where they are in the picture (one covers %.2f pixels); ",
-                      *density, 1.0 / *density);
+        std::snprintf(mean, sizeof mean,
+                      "%.2f texels per pixel where they are in the picture (one covers %.2f pixels); ", *density,
+                      1.0 / *density);
         text += mean;
     }
     return text + "the scene dim, from its camera";
@@ -250,7 +253,8 @@ ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in) {
     camera.target -= origin;
     place_scene_camera(renderer, camera);
     if (!in.has_map()) {
-        add_caption(renderer, in.title() + ": no shadow map, so no texels (a geometric technique; see the Stencil count view)");
+        add_caption(renderer,
+                    in.title() + ": no shadow map, so no texels (a geometric technique; see the Stencil count view)");
         return {};
     }
     ViewReport report;

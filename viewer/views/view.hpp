@@ -14,8 +14,8 @@ namespace shadowlab {
 
 enum class ViewKind { camera, world, light, ppls, shadow_map, texels, error, stencil };
 
-const char* to_string(ViewKind view);                          // as on the command line: "shadowmap"
-const char* view_title(ViewKind view);                         // as in the window: "Shadow map"
+const char* to_string(ViewKind view);                         // as on the command line: "shadowmap"
+const char* view_title(ViewKind view);                        // as in the window: "Shadow map"
 std::optional<ViewKind> view_named(const std::string& name);  // nullopt for an unknown name
 const std::vector<ViewKind>& all_views();
 // Does the view draw the chosen trace step (World, Light space, PPLS)? The others do not change with it.
@@ -45,17 +45,17 @@ enum class TextureShown { depth, moment_mean, moment_deviation };
 // orthographic along the light (what the map sees) or from the side (in the plane of the light and
 // the view direction, where a warp shows).
 enum class SpacePreset { orbit, from_light, side };
-const char* to_string(SpacePreset preset);                             // "orbit", "light", "side"
+const char* to_string(SpacePreset preset);                               // "orbit", "light", "side"
 std::optional<SpacePreset> space_preset_named(const std::string& name);  // nullopt for an unknown name
 const std::vector<SpacePreset>& all_space_presets();
 
 struct ViewOptions {
-    std::string step;       // the trace step to highlight; empty: the method's last step
+    std::string step;                         // the trace step to highlight; empty: the method's last step
     SpacePreset preset = SpacePreset::orbit;  // World, Light space, PPLS: how the camera looks
-    bool scene_in_ppls = true;  // PPLS: draw the scene's triangles (clipped to the unit cube and a margin)
-    bool lit_mask = false;  // camera view: white where lit, black where shadowed, unlit colours
+    bool scene_in_ppls = true;              // PPLS: draw the scene's triangles (clipped to the unit cube and a margin)
+    bool lit_mask = false;                  // camera view: white where lit, black where shadowed, unlit colours
     MapOverlay overlay = MapOverlay::none;  // camera view of a map method: each fragment's map or texels per pixel
-    int width = 0, height = 0;  // error view: the camera image it measures (0: 640 x 640 / aspect)
+    int width = 0, height = 0;              // error view: the camera image it measures (0: 640 x 640 / aspect)
     AliasingShown aliasing = AliasingShown::total;  // error view: the heat map's quantity
     ErrorShown error = ErrorShown::automatic;       // error view: verdicts or signed visibility error
     TextureShown texture = TextureShown::depth;     // shadow map view: depth or the moments VSM reads

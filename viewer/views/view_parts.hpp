@@ -48,7 +48,7 @@ extern const glm::dvec3 kTileBorder;
 // Shared by the builders.
 vtkSmartPointer<vtkActor> actor_for(const Placed& placed, const glm::dvec3& colour);
 void place_scene_camera(vtkRenderer* renderer, const Camera& camera);  // the VTK camera = the scene's
-void show_image(vtkRenderer* renderer, const RgbImage& image);  // one screen square per pixel, crisp
+void show_image(vtkRenderer* renderer, const RgbImage& image);         // one screen square per pixel, crisp
 void add_caption(vtkRenderer* renderer, const std::string& text);
 // A label pinned to the world point `at`, `display_offset` pixels beside it, drawn over the view
 // (world_label.cpp: not a billboard in the scene, whose translucency would cost the view an extra pass).

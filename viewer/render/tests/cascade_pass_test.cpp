@@ -133,7 +133,7 @@ TEST_F(TwoMapsByViewDepth, CascadeOverlayPaintsEachSplitInItsMapsColour) {
         }
     for (int map : {0, 1}) {
         ASSERT_GT(pixels[map], 2000u) << "map " << map << " serves some of the view";
-        EXPECT_GE(in_own_colour[map], 0.98 * pixels[map]) << "map " << map << ": " << in_own_colour[map] << " of "
-                                                          << pixels[map] << " pixels in its colour";
+        EXPECT_GE(in_own_colour[map], 0.98 * pixels[map])
+            << "map " << map << ": " << in_own_colour[map] << " of " << pixels[map] << " pixels in its colour";
     }
 }

@@ -136,7 +136,8 @@ TEST(GpuAgreesWithCpuFarFromTheOrigin, OnTheSpotScene) {
     for (const std::string method : {"focused", "lispsm"}) {
         const Agreement a = gpu_against_cpu_lookup(inspect(scene, method, 1024), kWidth, kHeight);
         ASSERT_GT(a.compared, kWidth * kHeight / 4u);
-        EXPECT_GE(a.share(), 0.995) << method << ": " << a.compared - a.agreed << " of " << a.compared << " pixels differ";
+        EXPECT_GE(a.share(), 0.995) << method << ": " << a.compared - a.agreed << " of " << a.compared
+                                    << " pixels differ";
     }
 }
 

@@ -67,7 +67,8 @@ class StencilAgreesWithCpu : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(StencilAgreesWithCpu, OnVisiblePixelsAwayFromShadowEdges) {
     const Scene scene = shipped(GetParam());
-    for (const auto& [technique, count] : {std::pair{"volumes", "zfail"}, std::pair{"volumes", "zpass"}, std::pair{"planar", ""}}) {
+    for (const auto& [technique, count] :
+         {std::pair{"volumes", "zfail"}, std::pair{"volumes", "zpass"}, std::pair{"planar", ""}}) {
         const Agreement a = gpu_against_cpu(inspect(scene, technique, count));
         ASSERT_EQ(a.undrawn, 0u) << "the GPU drew nothing where the reference sees something";
         ASSERT_GT(a.compared, kWidth * kHeight / 4u);
