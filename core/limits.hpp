@@ -68,8 +68,13 @@ inline std::string shown(double value) {
 
 // "±1e12", "[0.001, 1000]", "(0, 180)".
 inline std::string shown(const RealRange& range) {
-    if (!range.open && range.min == -range.max) return "±" + shown(range.max);
-    return (range.open ? "(" : "[") + shown(range.min) + ", " + shown(range.max) + (range.open ? ")" : "]");
+    // Appended, not prefixed: GCC 12 warns falsely of overlap (-Wrestrict) in `"±" + std::string`.
+    if (!range.open && range.min == -range.max) return std::string("±").append(shown(range.max));
+    return std::string(range.open ? "(" : "[")
+        .append(shown(range.min))
+        .append(", ")
+        .append(shown(range.max))
+        .append(range.open ? ")" : "]");
 }
 
 // "<name>: <value> is outside <min>..<max> (<what>)"
