@@ -12,6 +12,7 @@ packages=(
   xvfb xauth
   fonts-dejavu-core  # labels and captions: Greek letters (γ, ε) and superscripts the built-in VTK fonts lack
   clang libclang-rt-14-dev llvm  # the sanitizer build and the fuzzer; llvm-symbolizer for their reports
+  clang-format  # the house format, checked by scripts/format_check.sh
 )
 
 missing=()
