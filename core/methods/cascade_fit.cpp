@@ -1,8 +1,9 @@
 #include "methods/cascade_fit.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
+
+#include "math/invariant.hpp"
 
 namespace shadowlab {
 
@@ -23,7 +24,7 @@ Sphere slice_sphere(const Camera& camera, double near, double far) {
 }
 
 double quantize_up(double length, double unit) {
-    assert(unit > 0.0);  // the scene's bounds are padded never to be flat (gather_inputs)
+    assert_invariant(unit > 0.0);  // the scene's bounds are padded never to be flat (gather_inputs)
     const double units = length / unit;
     if (!(units > 0.0)) return length;  // a flat box: nothing to round
     const double step = std::ldexp(1.0, std::ilogb(units) - 6);

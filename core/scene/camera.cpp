@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "math/invariant.hpp"
 #include "math/normalize.hpp"
 
 namespace shadowlab {
@@ -45,6 +46,8 @@ const char* to_string(CameraProjection projection) {
 glm::dmat4 Camera::view_matrix() const { return glm::lookAt(position, target, normalize_safely(up)); }
 
 glm::dmat4 Camera::projection_matrix() const {
+    // The loader and the camera importers refuse any other range (scene_loader.cpp, camera_import.cpp).
+    assert_invariant(far > near && (is_orthographic() || near > 0.0));
     if (is_orthographic()) {
         const glm::dvec2 h = half_extent_at(near);
         return glm::ortho(-h.x, h.x, -h.y, h.y, near, far);
