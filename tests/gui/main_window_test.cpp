@@ -590,8 +590,8 @@ private slots:
         window_->findChild<QAction*>("beforeAfterWarp")->trigger();
         QVERIFY(settled(*window_));
         const std::vector<ViewPanel*>& panels = window_->panels();
-        QCOMPARE(static_cast<int>(panels[2]->view()), static_cast<int>(view_or_throw("light")));
-        QCOMPARE(static_cast<int>(panels[3]->view()), static_cast<int>(view_or_throw("ppls")));
+        QCOMPARE(QString::fromStdString(panels[2]->view().name), QString("light"));
+        QCOMPARE(QString::fromStdString(panels[3]->view().name), QString("ppls"));
         for (ViewPanel* panel : {panels[2], panels[3]})
             QCOMPARE(static_cast<int>(panel->preset()), static_cast<int>(SpacePreset::side));
     }
