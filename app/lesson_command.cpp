@@ -17,7 +17,7 @@ namespace shadowlab {
 namespace {
 
 struct Picture {
-    ViewKind view;
+    const View* view;
     SpacePreset preset;
     std::string title;  // what the picture shows, under it
 };
@@ -26,38 +26,37 @@ bool has_space(const Inspection& in, Space space) { return static_cast<bool>(in.
 
 // The view in which the method's own space is drawn: PPLS when the method warps, Light space when
 // it only fits a box (uniform, focused), the World view for a geometric technique.
-ViewKind view_of(const Inspection& in, Space space) {
-    if (space == Space::world || space == Space::view) return ViewKind::world;
+const View& view_of(const Inspection& in, Space space) {
+    if (space == Space::world || space == Space::view) return view_or_throw("world");
     if (space == Space::ppls || space == Space::unit)
-        return has_space(in, Space::ppls)    ? ViewKind::ppls
-               : has_space(in, Space::light) ? ViewKind::light
-                                             : ViewKind::world;
-    return has_space(in, Space::light) ? ViewKind::light : ViewKind::world;
+        return view_or_throw(has_space(in, Space::ppls) ? "ppls" : has_space(in, Space::light) ? "light" : "world");
+    return view_or_throw(has_space(in, Space::light) ? "light" : "world");
 }
 
 // The pictures that show step `i`: its space from the side and from the light (an orbit for the
 // world), both sides of the warp at the first step in PPLS, and the result after the last step.
 std::vector<Picture> pictures_of(const Inspection& in, size_t i) {
     const std::vector<Step>& steps = in.trace.steps();
-    const ViewKind view = view_of(in, steps[i].space);
+    const View& view = view_of(in, steps[i].space);
+    const View& ppls = view_or_throw("ppls");
     std::vector<Picture> out;
-    if (view == ViewKind::world) {
-        out.push_back({ViewKind::world, SpacePreset::orbit, "World"});
+    if (view == view_or_throw("world")) {
+        out.push_back({&view, SpacePreset::orbit, "World"});
     } else {
         const bool warp_applied =
-            view == ViewKind::ppls && std::none_of(steps.begin(), steps.begin() + i, [&](const Step& earlier) {
-                return view_of(in, earlier.space) == ViewKind::ppls;
-            });
-        if (warp_applied) out.push_back({ViewKind::light, SpacePreset::side, "before the warp: Light space, side"});
-        out.push_back({view, SpacePreset::side,
-                       std::string(warp_applied ? "after the warp: " : "") + view_title(view) + ", side"});
-        out.push_back({view, SpacePreset::from_light, std::string(view_title(view)) + ", from the light"});
+            view == ppls && std::none_of(steps.begin(), steps.begin() + i,
+                                         [&](const Step& earlier) { return view_of(in, earlier.space) == ppls; });
+        if (warp_applied)
+            out.push_back({&view_or_throw("light"), SpacePreset::side, "before the warp: Light space, side"});
+        out.push_back(
+            {&view, SpacePreset::side, std::string(warp_applied ? "after the warp: " : "") + view.title + ", side"});
+        out.push_back({&view, SpacePreset::from_light, view.title + ", from the light"});
     }
     if (i + 1 == steps.size()) {
-        out.push_back({ViewKind::camera, SpacePreset::orbit, "Camera: the shadows"});
-        out.push_back({in.has_map() ? ViewKind::shadow_map : ViewKind::stencil, SpacePreset::orbit,
+        out.push_back({&view_or_throw("camera"), SpacePreset::orbit, "Camera: the shadows"});
+        out.push_back({&view_or_throw(in.has_map() ? "shadowmap" : "stencil"), SpacePreset::orbit,
                        in.has_map() ? "Shadow map" : "Stencil count"});
-        out.push_back({ViewKind::error, SpacePreset::orbit, "Error against the exact reference"});
+        out.push_back({&view_or_throw("error"), SpacePreset::orbit, "Error against the exact reference"});
     }
     return out;
 }
@@ -101,7 +100,7 @@ std::string values_table(const Step& step, MatrixLayout layout) {
 
 std::string picture_file(size_t step, const Picture& p) {
     char name[96];
-    std::snprintf(name, sizeof name, "step-%02zu-%s-%s.png", step + 1, to_string(p.view), to_string(p.preset));
+    std::snprintf(name, sizeof name, "step-%02zu-%s-%s.png", step + 1, p.view->name.c_str(), to_string(p.preset));
     return name;
 }
 
@@ -159,10 +158,10 @@ int run_lesson(const LessonOptions& o) {
                 values_table(step, layout) + "\n<div>";
         for (const Picture& p : pictures_of(in, i)) {
             const std::string file = picture_file(i, p);
-            const glm::ivec2 size = looks_through_scene_camera(p.view)
+            const glm::ivec2 size = p.view->interaction.through_scene_camera
                                         ? image_size_within(in.scene.camera, o.width, o.height)
                                         : glm::ivec2(o.width, o.height);
-            write_png(render_view(in, p.view, {.step = step.id, .preset = p.preset}, size.x, size.y),
+            write_png(render_view(in, *p.view, {.step = step.id, .preset = p.preset}, size.x, size.y),
                       (dir / file).string());
             ++pictures;
             html += "<figure><img src=\"" + file + "\" width=\"" + std::to_string(size.x) + "\" alt=\"" +

@@ -17,6 +17,7 @@
 #include "render_command.hpp"
 #include "shimmer_command.hpp"
 #include "sweep_command.hpp"
+#include "views/view.hpp"
 
 namespace {
 
@@ -154,9 +155,7 @@ int main(int argc, char** argv) {
     render_cmd->add_option("scene", render.scene_file, scene_help)->required();
     add_scene_source(render_cmd, render.scene_source);
     render_cmd->add_option("--method,-m", render.method, method_help)->capture_default_str();
-    render_cmd
-        ->add_option("--view", render.view, "camera | world | light | ppls | shadowmap | texels | error | stencil")
-        ->capture_default_str();
+    render_cmd->add_option("--view", render.view, shadowlab::view_names(" | "))->capture_default_str();
     render_cmd->add_option("--step", render.step, "the trace step to highlight (see `inspect`); default: the last");
     render_cmd->add_option("--size", render_size, "image size WxH")->capture_default_str();
     render_cmd->add_option("--resolution,-r", render.resolution, "shadow map resolution")->capture_default_str();

@@ -14,13 +14,6 @@
 namespace shadowlab {
 namespace {
 
-ViewKind view_or_throw(const std::string& name) {
-    if (const auto view = view_named(name)) return *view;
-    std::string names;
-    for (ViewKind v : all_views()) names += (names.empty() ? "" : ", ") + std::string(to_string(v));
-    throw std::invalid_argument("--view: unknown view '" + name + "' (one of " + names + ")");
-}
-
 AliasingShown aliasing_or_throw(const std::string& name) {
     if (name == "total") return AliasingShown::total;
     if (name == "perspective") return AliasingShown::perspective;
@@ -84,7 +77,8 @@ void turn_light(Scene& scene, const std::string& angles) {
 void run_render(const RenderOptions& options) {
     limits::check(limits::image_side, "--size width", options.width);
     limits::check(limits::image_side, "--size height", options.height);
-    const ViewKind view = view_or_throw(options.view);
+    const View* view = find_view(options.view);
+    if (!view) throw std::invalid_argument("--view: unknown view '" + options.view + "' (one of " + view_names() + ")");
     const AliasingShown aliasing = aliasing_or_throw(options.aliasing);
     const ErrorShown error = error_or_throw(options.error);
     const TextureShown texture = texture_or_throw(options.texture);
@@ -95,7 +89,8 @@ void run_render(const RenderOptions& options) {
     // The camera keeps its aspect: its image is the largest of that shape within --size; the Camera
     // view is drawn at that size, the other views fill --size (their images are letterboxed).
     const glm::ivec2 camera_image = image_size_within(scene.camera, options.width, options.height);
-    const glm::ivec2 size = looks_through_scene_camera(view) ? camera_image : glm::ivec2(options.width, options.height);
+    const glm::ivec2 size =
+        view->interaction.through_scene_camera ? camera_image : glm::ivec2(options.width, options.height);
     InspectionRequest request;
     request.method = options.method;
     request.settings = options.settings;
@@ -114,9 +109,9 @@ void run_render(const RenderOptions& options) {
     view_options.preset = preset;
     view_options.scene_in_ppls = options.scene_in_ppls;
     view_options.overlay = overlay;
-    const RgbImage image = render_view(inspection, view, view_options, size.x, size.y);
+    const RgbImage image = render_view(inspection, *view, view_options, size.x, size.y);
     write_png(image, options.out);
-    std::cerr << "render: " << to_string(view) << " view of " << options.scene_file << " (" << inspection.name();
+    std::cerr << "render: " << view->name << " view of " << options.scene_file << " (" << inspection.name();
     if (inspection.has_map())
         std::cerr << ", " << inspection.resolution << "² map, bias "
                   << (inspection.bias < 0.0 ? "slope-scaled" : std::to_string(inspection.bias));

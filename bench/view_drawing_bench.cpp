@@ -25,7 +25,7 @@ const Inspection& default_inspection() {
     static const Inspection inspection = [] {
         const Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/default.json");
         Inspection in = inspect_scene(scene, InspectionRequest{});
-        for (ViewKind view : all_views()) prepare_view(in, view, ViewOptions{});
+        for (const View& view : all_views()) prepare_view(in, view, ViewOptions{});
         return in;
     }();
     return inspection;
@@ -54,16 +54,16 @@ ViewOptions panel_options() {
     return options;
 }
 
-void build(benchmark::State& state, ViewKind view) {
+void build(benchmark::State& state, const View* view) {
     const Inspection& in = default_inspection();
     for (auto _ : state) {
         vtkNew<vtkRenderer> renderer;
-        benchmark::DoNotOptimize(build_view(renderer, in, view, panel_options()));
+        benchmark::DoNotOptimize(build_view(renderer, in, *view, panel_options()));
     }
 }
 
 // Each iteration a new renderer with new actors, as after a change; only the render is timed.
-void first_render(benchmark::State& state, ViewKind view) {
+void first_render(benchmark::State& state, const View* view) {
     const Inspection& in = default_inspection();
     PanelWindow panel;
     for (auto _ : state) {
@@ -71,26 +71,27 @@ void first_render(benchmark::State& state, ViewKind view) {
         panel.window->GetRenderers()->RemoveAllItems();
         vtkNew<vtkRenderer> renderer;
         panel.window->AddRenderer(renderer);
-        build_view(renderer, in, view, panel_options());
+        build_view(renderer, in, *view, panel_options());
         state.ResumeTiming();
         panel.window->Render();
     }
 }
 
 // The same actors rendered again, as while the user orbits a view.
-void render_again(benchmark::State& state, ViewKind view) {
+void render_again(benchmark::State& state, const View* view) {
     const Inspection& in = default_inspection();
     PanelWindow panel;
     vtkNew<vtkRenderer> renderer;
     panel.window->AddRenderer(renderer);
-    build_view(renderer, in, view, panel_options());
+    build_view(renderer, in, *view, panel_options());
     panel.window->Render();
     for (auto _ : state) panel.window->Render();
 }
 
 const bool kRegistered = [] {
-    for (ViewKind view : {ViewKind::world, ViewKind::camera, ViewKind::light, ViewKind::shadow_map}) {
-        const std::string name = view_title(view);
+    for (const char* shown : {"world", "camera", "light", "shadowmap"}) {
+        const View* view = &view_or_throw(shown);
+        const std::string& name = view->title;
         benchmark::RegisterBenchmark(("view_build/" + name).c_str(), build, view)->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(("view_first_render/" + name).c_str(), first_render, view)
             ->Unit(benchmark::kMillisecond)

@@ -34,7 +34,8 @@ struct Delivered {
 };
 
 InspectionJob job_for(const Scene& scene, const std::string& method) {
-    InspectionJob job{.scene = scene, .request = {}, .shown = {{ViewKind::shadow_map, {}}, {ViewKind::world, {}}}};
+    InspectionJob job{
+        .scene = scene, .request = {}, .shown = {{&view_or_throw("shadowmap"), {}}, {&view_or_throw("world"), {}}}};
     job.request.method = method;
     job.request.resolution = 512;
     return job;

@@ -188,7 +188,7 @@ class MainWindowTest : public QObject {
     Q_OBJECT
     std::unique_ptr<MainWindow> window_;
 
-    ViewPanel* panel_showing(ViewKind view) {
+    ViewPanel* panel_showing(const View& view) {
         for (ViewPanel* p : window_->panels())
             if (p->view() == view) return p;
         return nullptr;
@@ -207,8 +207,8 @@ private slots:
     void cleanup() { window_.reset(); }
 
     void switchingTheMethodChangesTheViews() {
-        ViewPanel* light = panel_showing(ViewKind::light);
-        ViewPanel* map = panel_showing(ViewKind::shadow_map);
+        ViewPanel* light = panel_showing(view_or_throw("light"));
+        ViewPanel* map = panel_showing(view_or_throw("shadowmap"));
         QVERIFY(light && map);
         const RgbImage light_before = light->grab(), map_before = map->grab();
         QComboBox* selector = window_->controls()->method_selector();
@@ -233,11 +233,11 @@ private slots:
     void methodAndViewsAreRememberedBetweenRuns() {
         QComboBox* selector = window_->controls()->method_selector();
         selector->setCurrentIndex(selector->findData("lispsm"));
-        window_->panels()[0]->set_view(ViewKind::ppls);
+        window_->panels()[0]->set_view(view_or_throw("ppls"));
         window_->close();  // saves the settings
         MainWindow next;
         QCOMPARE(QString::fromStdString(next.controls()->request().method), QString("lispsm"));
-        QCOMPARE(static_cast<int>(next.panels()[0]->view()), static_cast<int>(ViewKind::ppls));
+        QCOMPARE(QString::fromStdString(next.panels()[0]->view().name), QString("ppls"));
     }
 
     void aMeshAloneGetsAGroundACameraAndASun() {
@@ -247,8 +247,8 @@ private slots:
     }
 
     void draggingTheLightHandleTurnsTheLight() {
-        ViewPanel* world = panel_showing(ViewKind::world);
-        ViewPanel* camera = panel_showing(ViewKind::camera);
+        ViewPanel* world = panel_showing(view_or_throw("world"));
+        ViewPanel* camera = panel_showing(view_or_throw("camera"));
         const RgbImage before = camera->grab();
         emit world->lightHandleMoved({30.0, 8.0, 0.0});  // dropped low on +x: the light now runs toward -x
         QVERIFY(settled(*window_));
@@ -269,7 +269,7 @@ private slots:
                 << "\nv 0 0 " << 0.5 * scale << "\nv 0 " << scale << " 0\nf 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n";
             QVERIFY(window_->open_file(file));
             QVERIFY(settled(*window_));
-            ViewPanel* world = panel_showing(ViewKind::world);
+            ViewPanel* world = panel_showing(view_or_throw("world"));
             world->grab();  // rendered: the balls are sized for the view's camera
             vtkRenderer* renderer = render_window(world)->GetRenderers()->GetFirstRenderer();
             std::vector<vtkSphereHandleRepresentation*> balls;
@@ -301,7 +301,7 @@ private slots:
     void volumesDrawStencilShadowsAndTheCameraInShadowBreaksZPass() {
         QVERIFY(window_->open_file(source("data/scenes/volumes.json")));
         QVERIFY(settled(*window_));
-        ViewPanel* camera = panel_showing(ViewKind::camera);
+        ViewPanel* camera = panel_showing(view_or_throw("camera"));
         const RgbImage map_image = camera->grab();
         const glm::dvec3 outside = window_->scene().camera.position;
         QComboBox* selector = window_->controls()->method_selector();
@@ -335,14 +335,15 @@ private slots:
             if (selector->itemData(m).toString().isEmpty()) continue;  // the separator
             selector->setCurrentIndex(m);
             QVERIFY(settled(*window_));
-            for (ViewKind view : all_views()) {
+            for (const View& view : all_views()) {
                 panel->set_view(view);
                 emit panel->viewChosen();
                 QVERIFY(settled(*window_));
                 const RgbImage image = panel->grab();
                 const double drawn = changed_share(image, flat_like(image));
-                QVERIFY2(drawn > 0.01, qPrintable(selector->itemData(m).toString() + " in " + view_title(view) +
-                                                  ": the panel is one flat colour"));
+                QVERIFY2(drawn > 0.01,
+                         qPrintable(selector->itemData(m).toString() + " in " + QString::fromStdString(view.title) +
+                                    ": the panel is one flat colour"));
             }
         }
     }
@@ -531,7 +532,7 @@ private slots:
         auto* aspect = window_->controls()->findChild<QComboBox*>("aspect");
         aspect->setCurrentIndex(aspect->findData(false));  // the Camera panel's
         QVERIFY(settled(*window_));
-        const QSize panel = panel_showing(ViewKind::camera)->drawing_size();
+        const QSize panel = panel_showing(view_or_throw("camera"))->drawing_size();
         const double panel_aspect = static_cast<double>(panel.width()) / panel.height();
         QVERIFY2(std::abs(panel_aspect - window_->scene().camera.aspect) > 0.05,
                  "the test needs a panel of another shape");
@@ -542,7 +543,7 @@ private slots:
         QVERIFY2(status.contains(said), qPrintable(status));
         window_->resize(1300, 1000);  // the aspect follows the panel once the resize settles
         QTRY_VERIFY(window_->inspection()->scene.camera.aspect != panel_aspect);
-        const QSize resized = panel_showing(ViewKind::camera)->drawing_size();
+        const QSize resized = panel_showing(view_or_throw("camera"))->drawing_size();
         QCOMPARE(window_->inspection()->scene.camera.aspect, static_cast<double>(resized.width()) / resized.height());
     }
 
@@ -550,7 +551,7 @@ private slots:
     // choosing a preset puts the preset's own camera back.
     void theCameraIsKeptBetweenSteps() {
         QVERIFY(settled(*window_));  // the test before resized the window: its panels redraw first
-        ViewPanel* light = panel_showing(ViewKind::light);
+        ViewPanel* light = panel_showing(view_or_throw("light"));
         const CameraPose placed = CameraPose::of(view_camera(light));
         const auto leave_an_orbit = [light] {  // a drag with the left button: the trackball turns the camera
             auto* widget = light->findChild<QVTKOpenGLNativeWidget*>();
@@ -589,15 +590,15 @@ private slots:
         window_->findChild<QAction*>("beforeAfterWarp")->trigger();
         QVERIFY(settled(*window_));
         const std::vector<ViewPanel*>& panels = window_->panels();
-        QCOMPARE(static_cast<int>(panels[2]->view()), static_cast<int>(ViewKind::light));
-        QCOMPARE(static_cast<int>(panels[3]->view()), static_cast<int>(ViewKind::ppls));
+        QCOMPARE(QString::fromStdString(panels[2]->view().name), QString("light"));
+        QCOMPARE(QString::fromStdString(panels[3]->view().name), QString("ppls"));
         for (ViewPanel* panel : {panels[2], panels[3]})
             QCOMPARE(static_cast<int>(panel->preset()), static_cast<int>(SpacePreset::side));
     }
 
     // "Shadow only" redraws the Camera view as its lit mask.
     void shadowOnlyRedrawsTheCameraView() {
-        ViewPanel* camera = panel_showing(ViewKind::camera);
+        ViewPanel* camera = panel_showing(view_or_throw("camera"));
         const RgbImage shaded = camera->grab();
         window_->controls()->findChild<QCheckBox*>("shadowOnly")->setChecked(true);
         QVERIFY(settled(*window_));
@@ -606,7 +607,7 @@ private slots:
 
     // The Camera panel's overlay chooser colours the pixels by the map they read.
     void theCameraOverlayTintsThePicture() {
-        ViewPanel* camera = panel_showing(ViewKind::camera);
+        ViewPanel* camera = panel_showing(view_or_throw("camera"));
         const RgbImage shadows = camera->grab();
         auto* overlay = camera->findChild<QComboBox*>("overlayChooser");
         QVERIFY(overlay && overlay->isVisibleTo(camera));
@@ -614,9 +615,9 @@ private slots:
         emit camera->viewChosen();
         QVERIFY(settled(*window_));
         QVERIFY2(changed_share(shadows, camera->grab()) > 0.2, "the overlay did not tint the Camera view");
-        QVERIFY(!panel_showing(ViewKind::world)
+        QVERIFY(!panel_showing(view_or_throw("world"))
                      ->findChild<QComboBox*>("overlayChooser")
-                     ->isVisibleTo(panel_showing(ViewKind::world)));
+                     ->isVisibleTo(panel_showing(view_or_throw("world"))));
     }
 
     // The Plot dock's shimmer is `shadowlab shimmer` with the dock's path and image: the same numbers.
@@ -673,7 +674,7 @@ private slots:
     }
 
     void choosingAStepHighlightsItsGeometry() {
-        ViewPanel* world = panel_showing(ViewKind::world);
+        ViewPanel* world = panel_showing(view_or_throw("world"));
         const RgbImage last = world->grab();
         window_->steps()->choose(2);  // the intersection body
         QVERIFY(settled(*window_));

@@ -75,7 +75,7 @@ private slots:
         QVERIFY(window.open_file(QString(SHADOWLAB_SOURCE_DIR) + "/data/scenes/default.json"));
         QVERIFY(testing::settled(window));
         const auto world = std::find_if(window.panels().begin(), window.panels().end(),
-                                        [](ViewPanel* p) { return p->view() == ViewKind::world; });
+                                        [](ViewPanel* p) { return p->view() == view_or_throw("world"); });
         QVERIFY(world != window.panels().end());
 
         CompositionCounter composed;

@@ -23,7 +23,7 @@ struct Overflow {
 
 // Builds the view in a panel of the given size, renders it (the captions wrap as the render
 // starts), and lists the texts whose bounding box leaves the panel's width.
-std::vector<Overflow> overflowing_texts(const Inspection& in, ViewKind view, int width, int height) {
+std::vector<Overflow> overflowing_texts(const Inspection& in, const View& view, int width, int height) {
     const XDisplay x("caption test");
     vtkNew<vtkRenderWindow> window;
     window->SetInteractor(nullptr);
@@ -64,9 +64,9 @@ TEST_P(CaptionsFit, EveryTextOfEveryViewLiesWithinItsPanel) {
     request.image_height = 180;
     const Inspection in = inspect_scene(scene, request);
     for (const auto& [width, height] : {std::pair{620, 380}, std::pair{400, 300}})
-        for (ViewKind view : all_views())
+        for (const View& view : all_views())
             for (const Overflow& o : overflowing_texts(in, view, width, height))
-                ADD_FAILURE() << GetParam() << ", " << to_string(view) << " view at " << width << "x" << height << ": '"
+                ADD_FAILURE() << GetParam() << ", " << view.name << " view at " << width << "x" << height << ": '"
                               << o.text << "' spans x " << o.left << " to " << o.right;
 }
 

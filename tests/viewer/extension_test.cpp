@@ -127,17 +127,17 @@ TEST_F(Extension, AThrowAwayMethodGoesThroughInspectMeasureRenderAndEveryView) {
     EXPECT_EQ(mine["misclassified"], uniform["misclassified"]);
     EXPECT_EQ(mine["m"], uniform["m"]);
 
-    for (ViewKind view : all_views()) {
-        const std::string out = ::testing::TempDir() + "throwaway_" + to_string(view) + ".png";
+    for (const View& view : all_views()) {
+        const std::string out = ::testing::TempDir() + "throwaway_" + view.name + ".png";
         std::filesystem::remove(out);
         run_render({.scene_file = scene_file(),
                     .method = "throwaway",
-                    .view = to_string(view),
+                    .view = view.name,
                     .width = 320,
                     .height = 180,
                     .resolution = 512,
                     .out = out});
-        EXPECT_TRUE(std::filesystem::exists(out)) << to_string(view);
+        EXPECT_TRUE(std::filesystem::exists(out)) << view.name;
     }
 
     const Agreement gpu = gpu_against_cpu_lookup(inspect(scene(), "throwaway", 1024), kWidth, kHeight);
@@ -174,7 +174,8 @@ TEST_F(Extension, TwoMapsInAnAtlasAreRasterizedLookedUpAndDrawn) {
     EXPECT_EQ(a.m.max, b.m.max);
 
     // The Shadow map view draws both tiles and leaves the other two empty.
-    const std::array<size_t, 4> quadrants = drawn_per_quadrant(render_view(tiles, ViewKind::shadow_map, {}, 512, 512));
+    const std::array<size_t, 4> quadrants =
+        drawn_per_quadrant(render_view(tiles, view_or_throw("shadowmap"), {}, 512, 512));
     EXPECT_GT(quadrants[0], 200u);
     EXPECT_NEAR(double(quadrants[3]), double(quadrants[0]), 0.05 * quadrants[0]) << "the same picture in both tiles";
     EXPECT_EQ(quadrants[1], 0u);

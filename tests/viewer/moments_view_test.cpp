@@ -32,7 +32,7 @@ TEST(MomentsView, TheDeviationIsBrightOnlyWhereTheBlurMixesDepths) {
         {.method = "focused", .settings = {{"filter", "vsm"}, {"kernel_size", "3"}}, .resolution = kResolution});
     ViewOptions options;
     options.texture = TextureShown::moment_deviation;
-    const RgbImage image = render_view(in, ViewKind::shadow_map, options, kWidth, kHeight);
+    const RgbImage image = render_view(in, view_or_throw("shadowmap"), options, kWidth, kHeight);
     size_t flat = 0, flat_dark = 0, edges = 0, edges_bright = 0;
     for (int row = kFirstRow; row < kLastRow; ++row)
         for (int x = 0; x < kResolution; ++x) {
@@ -54,8 +54,8 @@ TEST(MomentsView, AFilterWithoutMomentsShowsTheDepth) {
     const Inspection in = testing::inspect(testing::floating_box(kWidth, kHeight), "focused", kResolution);
     ViewOptions moments;
     moments.texture = TextureShown::moment_deviation;
-    const RgbImage asked = render_view(in, ViewKind::shadow_map, moments, kWidth, kHeight);
-    const RgbImage depth = render_view(in, ViewKind::shadow_map, ViewOptions{}, kWidth, kHeight);
+    const RgbImage asked = render_view(in, view_or_throw("shadowmap"), moments, kWidth, kHeight);
+    const RgbImage depth = render_view(in, view_or_throw("shadowmap"), ViewOptions{}, kWidth, kHeight);
     size_t differ = 0;
     for (int row = kFirstRow; row < kLastRow; ++row)  // the caption says why; the texels are the same
         for (int x = 0; x < kWidth; ++x)

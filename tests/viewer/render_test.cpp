@@ -23,7 +23,7 @@ TEST(ShadowMapView, ShowsTheCasterWhereWorldToUvzPutsIt) {
     Scene scene = floating_box(kWidth, kHeight);
     scene.objects[0].casts = true;  // the ground is drawn into the map too, farther from the light
     const Inspection in = inspect(scene, "focused", n);
-    const RgbImage image = render_view(in, ViewKind::shadow_map, {}, n, n);
+    const RgbImage image = render_view(in, view_or_throw("shadowmap"), {}, n, n);
     // One screen pixel per texel; texel row v is image row n - 1 - v.
     ASSERT_EQ(in.setup.maps.size(), 1u);  // the focused map: one tile, the whole texture
     auto pixel = [&](const glm::dvec3& p) {
@@ -41,7 +41,8 @@ TEST(ShadowMapView, ShowsTheCasterWhereWorldToUvzPutsIt) {
 TEST(ShadowMapView, TexelGridShowsOnlyWhenTexelsAreLarge) {
     const Scene scene = floating_box(kWidth, kHeight);
     auto bluish_pixels = [&](int resolution) {
-        const RgbImage image = render_view(inspect(scene, "focused", resolution), ViewKind::shadow_map, {}, 512, 512);
+        const RgbImage image =
+            render_view(inspect(scene, "focused", resolution), view_or_throw("shadowmap"), {}, 512, 512);
         size_t count = 0;
         for (int y = 0; y < image.height - 40; ++y)  // above the caption
             for (int x = 0; x < image.width; ++x) count += image.at(x, y)[2] > image.at(x, y)[0] + 60;
@@ -60,7 +61,7 @@ TEST(ErrorView, PaintsMisclassifiedPixelsByKind) {
         InspectionRequest request;
         request.method = method;
         request.image_width = kWidth;
-        const RgbImage image = render_view(inspect_scene(scene, request), ViewKind::error, {}, kWidth, kHeight);
+        const RgbImage image = render_view(inspect_scene(scene, request), view_or_throw("error"), {}, kWidth, kHeight);
         std::array<size_t, 2> counts{};              // false light, false shadow
         for (int y = 0; y < image.height - 30; ++y)  // above the caption
             for (int x = 0; x < image.width; ++x) {

@@ -81,7 +81,7 @@ Classified classify(const Scene& scene, const ReferenceImage& ref, const RgbImag
 RgbImage lit_mask(const Inspection& in) {
     ViewOptions options;
     options.lit_mask = true;
-    return render_view(in, ViewKind::camera, options, kWidth, kHeight);
+    return render_view(in, view_or_throw("camera"), options, kWidth, kHeight);
 }
 
 }  // namespace
@@ -93,7 +93,7 @@ class TeachingSceneShading : public ::testing::TestWithParam<std::string> {};
 TEST_P(TeachingSceneShading, ShadowIsTintedAndFacingAwayIsNeutral) {
     const Scene scene = teaching();
     const Inspection in = inspect_at_image_size(scene, GetParam());
-    const RgbImage shaded = render_view(in, ViewKind::camera, {}, kWidth, kHeight);
+    const RgbImage shaded = render_view(in, view_or_throw("camera"), {}, kWidth, kHeight);
     const Classified c = classify(scene, in.reference(kWidth, kHeight), shaded, lit_mask(in));
     ASSERT_GT(c.shadowed_ground.pixels, 2000u) << "the teaching scene shows its shadows on the ground";
     ASSERT_GT(c.lit_ground.pixels, 10000u);

@@ -62,7 +62,7 @@ TEST(SignedErrorView, PaintsTheErrorWhereItIsLargeAndWhiteWhereItIsZero) {
     const Inspection in = soft_pcf_inspection(6.0, "pcf");
     ViewOptions options;
     options.error = ErrorShown::signed_visibility;
-    const RgbImage image = render_view(in, ViewKind::error, options, kWidth, kHeight);
+    const RgbImage image = render_view(in, view_or_throw("error"), options, kWidth, kHeight);
     const VisibilityError& v = in.error(kWidth, kHeight).visibility;
     const Shares s = compare(image, v);
     ASSERT_GT(s.large, 100u) << "the scene should show a penumbra the filter gets wrong";

@@ -69,9 +69,9 @@ size_t new_pixels(const RgbImage& now, const RgbImage* before, const std::vector
 }
 
 // The view that draws a step's space; a geometric technique draws every step in the World.
-ViewKind view_of(const Inspection& in, Space space) {
-    if (!in.has_map() || space == Space::world || space == Space::view) return ViewKind::world;
-    return space == Space::light ? ViewKind::light : ViewKind::ppls;
+const View& view_of(const Inspection& in, Space space) {
+    if (!in.has_map() || space == Space::world || space == Space::view) return view_or_throw("world");
+    return space == Space::light ? view_or_throw("light") : view_or_throw("ppls");
 }
 
 // The first and last columns (rows) where a colour runs along at least `share` of the picture's
@@ -136,18 +136,18 @@ TEST(SpaceViews, EveryStepOfEveryMethodDrawsSomethingNew) {
     for (const std::string& method : kShippedMethods) {
         const Inspection in = inspect_shipped("teaching", method);
         const std::vector<Step>& steps = in.trace.steps();
-        std::map<std::pair<size_t, ViewKind>, RgbImage> renders;
-        auto render = [&](size_t i, ViewKind view) -> const RgbImage& {
-            auto [it, fresh] = renders.try_emplace({i, view});
+        std::map<std::pair<size_t, std::string>, RgbImage> renders;
+        auto render = [&](size_t i, const View& view) -> const RgbImage& {
+            auto [it, fresh] = renders.try_emplace({i, view.name});
             if (fresh) it->second = render_view(in, view, ViewOptions{.step = steps[i].id}, kWidth, kHeight);
             return it->second;
         };
         for (size_t i = 0; i < steps.size(); ++i) {
-            const ViewKind view = view_of(in, steps[i].space);
+            const View& view = view_of(in, steps[i].space);
             const RgbImage* before = i == 0 ? nullptr : &render(i - 1, view);
             EXPECT_GE(new_pixels(render(i, view), before, step_colours(steps[i])), kVisible)
-                << method << ": step " << i + 1 << " '" << steps[i].id << "' draws nothing new in the "
-                << to_string(view) << " view";
+                << method << ": step " << i + 1 << " '" << steps[i].id << "' draws nothing new in the " << view.name
+                << " view";
         }
     }
 }
@@ -158,15 +158,15 @@ TEST(SpaceViews, EveryStepOfEveryMethodDrawsSomethingNew) {
 TEST(SpacePresets, FromTheLightTheMapsVolumeIsAnAxisAlignedRectangleFillingTheFrame) {
     const Inspection in = inspect_box_on_plane("uniform");
     const glm::dvec3 cyan = role_style(Role::map).colour;
-    for (ViewKind view : {ViewKind::light, ViewKind::ppls}) {
+    for (const View* view : {&view_or_throw("light"), &view_or_throw("ppls")}) {
         const RgbImage image =
-            render_view(in, view, {.step = "unit-cube", .preset = SpacePreset::from_light}, kWidth, kHeight);
+            render_view(in, *view, {.step = "unit-cube", .preset = SpacePreset::from_light}, kWidth, kHeight);
         const Span columns = straight_edges(image, cyan, true, 0.3), rows = straight_edges(image, cyan, false, 0.3);
-        ASSERT_GE(columns.first, 0) << to_string(view) << ": no straight vertical edge";
-        ASSERT_GE(rows.first, 0) << to_string(view) << ": no straight horizontal edge";
-        EXPECT_GT(columns.length(), kHeight / 2) << to_string(view);
-        EXPECT_GT(rows.length(), kHeight / 2) << to_string(view);
-        EXPECT_GT(columns.length() * rows.length(), 0.3 * kWidth * kHeight) << to_string(view);
+        ASSERT_GE(columns.first, 0) << view->name << ": no straight vertical edge";
+        ASSERT_GE(rows.first, 0) << view->name << ": no straight horizontal edge";
+        EXPECT_GT(columns.length(), kHeight / 2) << view->name;
+        EXPECT_GT(rows.length(), kHeight / 2) << view->name;
+        EXPECT_GT(columns.length() * rows.length(), 0.3 * kWidth * kHeight) << view->name;
     }
 }
 
@@ -176,8 +176,8 @@ TEST(SpacePresets, FromTheSideTheWarpTurnsTheFrustumBoxLike) {
     const Inspection in = inspect_box_on_plane("lispsm");
     const ViewOptions before_warp{.step = "light-space", .preset = SpacePreset::side};
     const ViewOptions after_warp{.step = "warp", .preset = SpacePreset::side};
-    const double light_space = frustum_end_ratio(render_view(in, ViewKind::light, before_warp, kWidth, kHeight));
-    const double ppls = frustum_end_ratio(render_view(in, ViewKind::ppls, after_warp, kWidth, kHeight));
+    const double light_space = frustum_end_ratio(render_view(in, view_or_throw("light"), before_warp, kWidth, kHeight));
+    const double ppls = frustum_end_ratio(render_view(in, view_or_throw("ppls"), after_warp, kWidth, kHeight));
     EXPECT_GT(light_space, 4.0) << "from its apex (near the eye) the frustum opens";
     EXPECT_LT(ppls, 2.0) << "the warp brings its ends close to one width";
     EXPECT_GT(light_space, 3.0 * ppls);
@@ -188,11 +188,11 @@ TEST(SpacePresets, FromTheSideTheWarpTurnsTheFrustumBoxLike) {
 TEST(PplsView, SceneIsOptionalAndCutToTheFramedRegion) {
     const Inspection in = inspect_box_on_plane("lispsm");
     const RgbImage with =
-        render_view(in, ViewKind::ppls, {.step = "warp", .preset = SpacePreset::from_light}, kWidth, kHeight);
+        render_view(in, view_or_throw("ppls"), {.step = "warp", .preset = SpacePreset::from_light}, kWidth, kHeight);
     const RgbImage without =
-        render_view(in, ViewKind::ppls, {.step = "warp", .preset = SpacePreset::from_light, .scene_in_ppls = false},
-                    kWidth, kHeight);
-    const std::optional<SpaceFrame> frame = space_frame(in, ViewKind::ppls, in.trace.find("warp"));
+        render_view(in, view_or_throw("ppls"),
+                    {.step = "warp", .preset = SpacePreset::from_light, .scene_in_ppls = false}, kWidth, kHeight);
+    const std::optional<SpaceFrame> frame = space_frame(in, Space::ppls, in.trace.find("warp"));
     ASSERT_TRUE(frame);
     // The map's volume is the region: its square's pixels give the scale of the margin.
     const glm::dvec3 cyan = role_style(Role::map).colour;

@@ -57,7 +57,7 @@ double distance_to_plane(const WorldTriangles& scene, int triangle, const glm::d
 
 // The view built in a window of the given size (not rendered) and the texts it holds: captions,
 // legends and labels.
-std::vector<std::string> texts_of(const Inspection& in, ViewKind view, int width, int height) {
+std::vector<std::string> texts_of(const Inspection& in, const View& view, int width, int height) {
     const XDisplay x("texels test");
     vtkNew<vtkRenderWindow> window;
     window->SetInteractor(nullptr);
@@ -159,7 +159,8 @@ TEST(TexelsView, TheStrideCapsTheTexelsDrawnAndTheCaptionSaysIt) {
     ASSERT_GT(stride, 1) << "box_on_plane at 1024² holds more surface texels than the cap";
     EXPECT_LE(world_texels(in.setup, surfaces, stride).size(), kCap);
     EXPECT_GT(world_texels(in.setup, surfaces, stride - 1).size(), kCap) << "one map serves every texel";
-    EXPECT_TRUE(any_contains(texts_of(in, ViewKind::texels, kWidth, kHeight), "every " + std::to_string(stride)));
+    EXPECT_TRUE(
+        any_contains(texts_of(in, view_or_throw("texels"), kWidth, kHeight), "every " + std::to_string(stride)));
 }
 
 TEST(TexelsView, EveryMapMethodDrawsTexelsAndATechniqueSaysItHasNone) {
@@ -167,11 +168,13 @@ TEST(TexelsView, EveryMapMethodDrawsTexelsAndATechniqueSaysItHasNone) {
     for (const Method& method : all_methods()) {
         const Inspection in = inspect(scene, method.name, 256);
         if (!in.has_map()) {
-            EXPECT_TRUE(any_contains(texts_of(in, ViewKind::texels, kWidth, kHeight), "no shadow map, so no texels"))
+            EXPECT_TRUE(
+                any_contains(texts_of(in, view_or_throw("texels"), kWidth, kHeight), "no shadow map, so no texels"))
                 << method.name;
             continue;
         }
-        EXPECT_GT(first_map_pixels(render_view(in, ViewKind::texels, {}, kWidth, kHeight)), 2000u) << method.name;
+        EXPECT_GT(first_map_pixels(render_view(in, view_or_throw("texels"), {}, kWidth, kHeight)), 2000u)
+            << method.name;
     }
 }
 
@@ -190,13 +193,13 @@ TEST(ShadowMapView, AnAtlasShowsTheBorderBetweenItsTilesAndALabelEach) {
         }
         return rows;
     };
-    const RgbImage tiles = render_view(atlas, ViewKind::shadow_map, {}, kSide, kSide);
+    const RgbImage tiles = render_view(atlas, view_or_throw("shadowmap"), {}, kSide, kSide);
     EXPECT_GE(border_rows(tiles, kSide / 2 - 2, kSide / 2 + 1), 0.9 * (kSide - 40));
     EXPECT_LT(border_rows(tiles, kSide / 4 - 2, kSide / 4 + 1), 0.1 * kSide) << "no border inside a tile";
-    const RgbImage one = render_view(inspect(scene, "uniform", 1024), ViewKind::shadow_map, {}, kSide, kSide);
+    const RgbImage one = render_view(inspect(scene, "uniform", 1024), view_or_throw("shadowmap"), {}, kSide, kSide);
     EXPECT_EQ(border_rows(one, 0, kSide - 1), 0);
 
-    const std::vector<std::string> texts = texts_of(atlas, ViewKind::shadow_map, kSide, kSide);
+    const std::vector<std::string> texts = texts_of(atlas, view_or_throw("shadowmap"), kSide, kSide);
     EXPECT_TRUE(any_contains(texts, "cascade 1\n512²"));
     EXPECT_TRUE(any_contains(texts, "cascade 2\n512²"));
 }
@@ -206,7 +209,7 @@ TEST(ShadowMapView, AnAtlasShowsTheBorderBetweenItsTilesAndALabelEach) {
 TEST(ShadowMapView, ACubeMapIsShownUnfoldedAsACross) {
     const Inspection cube = inspect(shipped_scene("lamp_room", 512, 512), "cube", 1024);
     constexpr int kSide = 512;  // the cross's texture, four faces wide, fills the square: cells of 128 pixels
-    const RgbImage image = render_view(cube, ViewKind::shadow_map, {}, kSide, kSide);
+    const RgbImage image = render_view(cube, view_or_throw("shadowmap"), {}, kSide, kSide);
     const auto white_share = [&](int column, int row) {
         int white = 0, all = 0;
         for (int y = row * 128 + 8; y < (row + 1) * 128 - 8; ++y)
@@ -217,7 +220,7 @@ TEST(ShadowMapView, ACubeMapIsShownUnfoldedAsACross) {
     EXPECT_GT(white_share(0, 0), 0.99) << "no face in the cross's corner";
     EXPECT_GT(white_share(3, 2), 0.99);
     EXPECT_LT(white_share(1, 0), 0.9) << "+y: the beam over the bulb";
-    const std::vector<std::string> texts = texts_of(cube, ViewKind::shadow_map, kSide, kSide);
+    const std::vector<std::string> texts = texts_of(cube, view_or_throw("shadowmap"), kSide, kSide);
     for (const char* face : {"face +x", "face -x", "face +y", "face -y", "face +z", "face -z"})
         EXPECT_TRUE(any_contains(texts, face)) << face;
     EXPECT_TRUE(any_contains(texts, "unfolded as a cross"));

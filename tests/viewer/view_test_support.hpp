@@ -104,7 +104,7 @@ inline Inspection inspect(const Scene& scene, const std::string& method, int res
 inline Agreement gpu_against_cpu_lookup(const Inspection& in, int width, int height) {
     ViewOptions options;
     options.lit_mask = true;
-    const RgbImage gpu = render_view(in, ViewKind::camera, options, width, height);
+    const RgbImage gpu = render_view(in, view_or_throw("camera"), options, width, height);
     const ReferenceImage& ref = in.reference(width, height);
     const ShadowReader reader(in.setup, in.depth(), in.scene.light, in.lookup);
     std::vector<int8_t> cpu(ref.visible.size(), -1);

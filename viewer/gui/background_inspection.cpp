@@ -93,9 +93,8 @@ void BackgroundInspection::run(const InspectionJob& job, std::uint64_t number) {
         for (size_t i = 0; i < job.shown.size(); ++i) {
             if (superseded(number)) return;
             const ShownView& shown = job.shown[i];
-            enter_phase(std::string("preparing the ") + view_title(shown.view) + " view", 1 + static_cast<int>(i),
-                        phases);
-            prepare_view(*inspection, shown.view, shown.options);
+            enter_phase("preparing the " + shown.view->title + " view", 1 + static_cast<int>(i), phases);
+            prepare_view(*inspection, *shown.view, shown.options);
         }
         deliver(number, [this, inspection] { emit landed(inspection); });
         if (!job.plot || superseded(number)) return;

@@ -24,7 +24,7 @@ namespace shadowlab {
 
 // A panel the inspection will be drawn in, as it will draw it.
 struct ShownView {
-    ViewKind view;
+    const View* view;
     ViewOptions options;
 };
 

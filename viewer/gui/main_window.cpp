@@ -6,10 +6,7 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QDragEnterEvent>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
-#include <QLineEdit>
 #include <QMenuBar>
 #include <QMimeData>
 #include <QPlainTextEdit>
@@ -19,21 +16,20 @@
 #include <QStatusBar>
 #include <QTime>
 #include <QTimer>
-#include <algorithm>
 #include <fstream>
-#include <utility>
 #include <vtkOpenGLRenderWindow.h>
 
+#include "gui/camera_matrices_dialog.hpp"
 #include "gui/controls_panel.hpp"
+#include "gui/file_dialogs.hpp"
+#include "gui/panel_scheduler.hpp"
 #include "gui/plot_panel.hpp"
 #include "gui/scene_panel.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
 #include "io/camera_import.hpp"
-#include "model/camera_in_shadow.hpp"
 #include "render/opengl_renderer.hpp"
 #include "render/rgb_image.hpp"
-#include "scene/scene_loader.hpp"
 
 namespace shadowlab {
 namespace {
@@ -56,6 +52,7 @@ QDockWidget* dock(const QString& title, const QString& name, QWidget* content, Q
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       computing_(new BackgroundInspection(this)),
+      scheduler_(new PanelScheduler([this](ViewPanel* panel) { build_view_of(panel); }, this)),
       progress_timer_(new QTimer(this)),
       progress_bar_(new QProgressBar(this)),
       controls_(new ControlsPanel(this)),
@@ -91,11 +88,10 @@ MainWindow::MainWindow(QWidget* parent)
 
     // Four linked views: World | Camera over Light space | Shadow map; each can show any view.
     auto* rows = new QSplitter(Qt::Vertical, this);
-    for (const auto& pair :
-         {std::pair{ViewKind::world, ViewKind::camera}, std::pair{ViewKind::light, ViewKind::shadow_map}}) {
+    for (const auto& pair : {std::pair{"world", "camera"}, std::pair{"light", "shadowmap"}}) {
         auto* row = new QSplitter(Qt::Horizontal, rows);
-        for (ViewKind v : {pair.first, pair.second}) {
-            auto* panel = new ViewPanel(v, row);
+        for (const char* v : {pair.first, pair.second}) {
+            auto* panel = new ViewPanel(view_or_throw(v), row);
             panels_.push_back(panel);
             connect(panel, &ViewPanel::viewChosen, this, [this] {
                 recompute();             // the view may read parts of the inspection not yet made
@@ -104,11 +100,11 @@ MainWindow::MainWindow(QWidget* parent)
             connect(panel, &ViewPanel::resized, resize_timer_, QOverload<>::of(&QTimer::start));
             connect(panel, &ViewPanel::cameraMoved, this,
                     [this](const glm::dvec3& p, const glm::dvec3& t, const glm::dvec3& u) {
-                        scene_.camera.position = p, scene_.camera.target = t, scene_.camera.up = u;
+                        session_.orbit_camera(p, t, u);
                         recompute();
                     });
             connect(panel, &ViewPanel::cameraHandleMoved, this, [this](const glm::dvec3& position) {
-                if (glm::length(scene_.camera.target - position) > 0.0) scene_.camera.position = position;
+                session_.move_camera_to(position);
                 recompute();
             });
             connect(panel, &ViewPanel::lightHandleMoved, this,
@@ -138,24 +134,24 @@ MainWindow::MainWindow(QWidget* parent)
     connect(controls_, &ControlsPanel::changed, this, &MainWindow::recompute);
     connect(scene_panel_, &ScenePanel::rolesChanged, this, &MainWindow::set_roles);
     connect(scene_panel_, &ScenePanel::cameraChosen, this, [this](int index) {
-        choose_from_gltf({.camera = static_cast<size_t>(index), .light = gltf_->reference.choice.light});
+        choose_from_gltf({.camera = static_cast<size_t>(index), .light = session_.gltf()->reference.choice.light});
     });
     connect(scene_panel_, &ScenePanel::lightChosen, this, [this](int index) {
-        choose_from_gltf({.camera = gltf_->reference.choice.camera, .light = static_cast<size_t>(index)});
+        choose_from_gltf({.camera = session_.gltf()->reference.choice.camera, .light = static_cast<size_t>(index)});
     });
     connect(controls_, &ControlsPanel::lightChanged, this, [this] {
-        scene_.light.direction = controls_->light_direction();
+        session_.turn_light(controls_->light_direction());
         recompute();
     });
     connect(controls_, &ControlsPanel::cameraInShadowToggled, this, &MainWindow::put_camera_in_shadow);
     connect(controls_, &ControlsPanel::aspectChanged, this, &MainWindow::recompute);
     connect(controls_, &ControlsPanel::shadowOnlyToggled, this, [this] {
         for (ViewPanel* panel : panels_)
-            if (panel->view() == ViewKind::camera) redraw(panel);
+            if (panel->view().choosers.shadow_only) redraw(panel);
     });
     connect(steps_, &StepPlayer::stepChosen, this, [this] {  // only the views that draw steps: the
         for (ViewPanel* panel : panels_)                     // Error view would trace its reference again
-            if (shows_steps(panel->view())) redraw(panel);
+            if (panel->view().interaction.draws_steps) redraw(panel);
     });
     connect(plot_, &PlotPanel::kindChosen, this, &MainWindow::recompute);
     connect(plot_dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
@@ -176,8 +172,8 @@ void MainWindow::build_menus() {
         export_menu->clear();
         for (size_t i = 0; i < panels_.size(); ++i) {
             ViewPanel* panel = panels_[i];
-            export_menu->addAction(QString("Panel %1: %2…").arg(i + 1).arg(view_title(panel->view())), this,
-                                   [this, panel] { export_view(panel); });
+            export_menu->addAction(QString("Panel %1: %2…").arg(i + 1).arg(QString::fromStdString(panel->view().title)),
+                                   this, [this, panel] { export_view(panel); });
         }
     });
     QMenu* matrices = file->addMenu("Export &matrices");
@@ -205,28 +201,19 @@ void MainWindow::build_menus() {
 
 bool MainWindow::open_file(const QString& path) {
     try {
-        Scene loaded = load_scene(path.toStdString());  // JSON, glTF (its own camera and light) or a lone mesh
-        for (const std::string& note : loading_notes(loaded)) message(QString::fromStdString(note), false);
-        std::optional<GltfSource> gltf;
-        if (std::optional<GltfReference> reference =
-                gltf_reference_of(QFileInfo(path).absoluteFilePath().toStdString()))
-            gltf = GltfSource{.reference = *reference, .contents = gltf_contents(reference->gltf_file)};
-        replace_scene(std::move(loaded), std::move(gltf), path);
-        return true;
+        for (const std::string& note : session_.open_file(path.toStdString()))
+            message(QString::fromStdString(note), false);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);
         return false;
     }
+    scene_replaced();
+    return true;
 }
 
-// The scene shown gives way to `scene`, until its inspection lands; if it cannot be inspected, the
-// scene before comes back (fail).
-void MainWindow::replace_scene(Scene scene, std::optional<GltfSource> gltf, const QString& opened_path) {
-    opening_ = Opening{.path = opened_path,
-                       .previous = std::exchange(scene_, std::move(scene)),
-                       .previous_gltf = std::exchange(gltf_, std::move(gltf)),
-                       .previous_camera_outside = std::exchange(camera_outside_, std::nullopt)};
-    controls_->set_light_direction(scene_.light.direction);
+// A scene on trial in the session: the controls and panels start from it.
+void MainWindow::scene_replaced() {
+    controls_->set_light_direction(session_.scene().light.direction);
     controls_->clear_camera_in_shadow();
     for (ViewPanel* panel : panels_) panel->forget_camera();
     show_scene_parts();
@@ -234,39 +221,32 @@ void MainWindow::replace_scene(Scene scene, std::optional<GltfSource> gltf, cons
 }
 
 void MainWindow::show_scene_parts() {
-    scene_panel_->set_scene(scene_, gltf_ ? &gltf_->contents : nullptr,
-                            gltf_ ? gltf_->reference.choice : SceneChoice{});
-    save_scene_->setEnabled(gltf_.has_value());
-    if (gltf_) findChild<QDockWidget*>("sceneDock")->show();
+    const std::optional<GltfSource>& gltf = session_.gltf();
+    scene_panel_->set_scene(session_.scene(), gltf ? &gltf->contents : nullptr,
+                            gltf ? gltf->reference.choice : SceneChoice{});
+    save_scene_->setEnabled(gltf.has_value());
+    if (gltf) findChild<QDockWidget*>("sceneDock")->show();
 }
 
 // Another camera or light of the glTF file: the scene read again with it, the roles kept.
 void MainWindow::choose_from_gltf(const SceneChoice& choice) {
     try {
-        GltfReference reference = gltf_->reference;
-        reference.choice = choice;
-        reference.roles = roles_by_name(scene_, reference.gltf_file);
-        reference.name = scene_.name;
-        GltfScene chosen = referenced_scene(reference, scene_.source_file);
-        for (const std::string& assumed : chosen.defaulted) message(QString::fromStdString(assumed), false);
-        replace_scene(std::move(chosen.scene), GltfSource{.reference = reference, .contents = gltf_->contents},
-                      QString());
+        for (const std::string& assumed : session_.choose_from_gltf(choice))
+            message(QString::fromStdString(assumed), false);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);
         show_scene_parts();  // the chooser back to the choice in force
+        return;
     }
+    scene_replaced();
 }
 
 // An object marked as casting or receiving (or neither); refused, with the reason, if the scene
 // would break a rule (a light inside a mesh that casts).
 void MainWindow::set_roles(int object, bool casts, bool receives) {
-    SceneObject& changed = scene_.objects.at(static_cast<size_t>(object));
-    const SceneObject before = changed;
-    changed.casts = casts, changed.receives = receives;
     try {
-        validate_scene(scene_);
+        session_.set_roles(static_cast<size_t>(object), casts, receives);
     } catch (const std::exception& e) {
-        changed = before;
         message(QString::fromStdString(e.what()), true);
         show_scene_parts();
         return;
@@ -275,16 +255,17 @@ void MainWindow::set_roles(int object, bool casts, bool receives) {
 }
 
 MainWindow::AspectInForce MainWindow::aspect_in_force() const {
-    if (controls_->aspect_locked()) return {scene_.camera.aspect, "the scene"};
+    const double scene_aspect = session_.scene().camera.aspect;
+    if (controls_->aspect_locked()) return {scene_aspect, "the scene"};
     const ViewPanel* panel = camera_panel();
     const QSize size = panel ? panel->drawing_size() : QSize();
-    if (size.isEmpty()) return {scene_.camera.aspect, "the scene (no Camera panel to follow)"};
+    if (size.isEmpty()) return {scene_aspect, "the scene (no Camera panel to follow)"};
     return {static_cast<double>(size.width()) / size.height(), "the Camera panel"};
 }
 
 ViewPanel* MainWindow::camera_panel() const {
     for (ViewPanel* panel : panels_)
-        if (panel->view() == ViewKind::camera) return panel;
+        if (panel->view().interaction.drag == ViewDrag::steers_scene_camera) return panel;
     return nullptr;
 }
 
@@ -292,24 +273,26 @@ ViewPanel* MainWindow::camera_panel() const {
 // it changed; else the panels are built again for their new sizes (a space view frames its region
 // for the panel's shape, an image view fits its pixels).
 void MainWindow::settle_resize() {
-    if (!inspection_) return;
-    if (aspect_in_force().aspect != inspection_->scene.camera.aspect)
+    if (!session_.inspection()) return;
+    if (aspect_in_force().aspect != session_.inspection()->scene.camera.aspect)
         recompute();
     else
         redraw();
 }
 
+int MainWindow::drawings() const { return scheduler_->drawings(); }
+
 bool MainWindow::computing() const {
-    return computing_->busy() || !undrawn_.empty() || resize_timer_->isActive();  // the last: a change to come
+    return computing_->busy() || scheduler_->busy() || resize_timer_->isActive();  // the last: a change to come
 }
 
 void MainWindow::recompute() {
-    if (scene_.objects.empty()) return;
+    if (session_.scene().objects.empty()) return;
     const AspectInForce aspect = aspect_in_force();
-    InspectionJob job{.scene = scene_, .request = controls_->request(), .shown = {}, .plot = {}};
+    InspectionJob job{.scene = session_.scene(), .request = controls_->request(), .shown = {}, .plot = {}};
     job.scene.camera.aspect = aspect.aspect;
     for (ViewPanel* panel : panels_)
-        job.shown.push_back({panel->view(), panel->options_for(view_options(), aspect.aspect)});
+        job.shown.push_back({&panel->view(), panel->options_for(view_options(), aspect.aspect)});
     const Method* method = find_method(job.request.method);
     if (plot_->isVisible() && method && method->makes_maps())
         job.plot = plot_->request(job.scene, job.request.method, job.request.settings, job.request.resolution);
@@ -336,27 +319,25 @@ void MainWindow::end_progress() {
 // The newest change's inspection: every view redraws from it.
 void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
     if (!computing_->busy()) end_progress();  // else the plot is still measured: the timer ends it
-    inspection_ = std::move(inspection);
     fit_messages(kIdleMessageLines);
-    if (opening_ && !opening_->path.isEmpty()) {
-        const QString path = std::exchange(opening_, std::nullopt)->path;
+    if (const std::optional<std::string> opened = session_.land(std::move(inspection))) {
+        const QString path = QString::fromStdString(*opened);
         remember_recent(path);
         setWindowTitle("ShadowLab — " + QFileInfo(path).fileName());
-        message("opened " + path + " (" + QString::number(scene_.objects.size()) + " objects)", false);
+        message("opened " + path + " (" + QString::number(session_.scene().objects.size()) + " objects)", false);
     }
-    opening_.reset();
-    steps_->set_trace(inspection_->trace);
-    const std::string bias = inspection_->bias < 0.0 ? "slope-scaled" : std::to_string(inspection_->bias);
-    const std::string what = inspection_->has_map()
-                                 ? std::to_string(inspection_->resolution) + "² map, bias " + bias
-                                 : std::to_string(inspection_->image_width) + "x" +
-                                       std::to_string(inspection_->image_height) + " camera image judged";
-    const std::string notes_label = inspection_->has_map() ? "fallback: " : "limits: ";
-    const std::vector<Note>& notes = inspection_->notes();
+    const Inspection& shown = *session_.inspection();
+    steps_->set_trace(shown.trace);
+    const std::string bias = shown.bias < 0.0 ? "slope-scaled" : std::to_string(shown.bias);
+    const std::string what = shown.has_map() ? std::to_string(shown.resolution) + "² map, bias " + bias
+                                             : std::to_string(shown.image_width) + "x" +
+                                                   std::to_string(shown.image_height) + " camera image judged";
+    const std::string notes_label = shown.has_map() ? "fallback: " : "limits: ";
+    const std::vector<Note>& notes = shown.notes();
     const std::string told = notes_label + (notes.empty() ? "none" : describe(notes));
     statusBar()->showMessage(
-        QString::fromStdString(inspection_->title() + " — " + what + " — " + told) +
-        QString(" — aspect %1 from %2").arg(inspection_->scene.camera.aspect, 0, 'f', 2).arg(aspect_source_));
+        QString::fromStdString(shown.title() + " — " + what + " — " + told) +
+        QString(" — aspect %1 from %2").arg(shown.scene.camera.aspect, 0, 'f', 2).arg(aspect_source_));
     if (!notes.empty()) message(QString::fromStdString(told), false);
     redraw();
 }
@@ -366,41 +347,25 @@ void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
 void MainWindow::fail(const QString& why) {
     end_progress();
     message(why, true);
-    if (!opening_) return;
-    Opening opened = *std::exchange(opening_, std::nullopt);
-    scene_ = std::move(opened.previous);
-    gltf_ = std::move(opened.previous_gltf);
-    camera_outside_ = opened.previous_camera_outside;
-    controls_->set_light_direction(scene_.light.direction);
+    if (!session_.fail()) return;
+    controls_->set_light_direction(session_.scene().light.direction);
     show_scene_parts();
     recompute();
 }
 
 // Into a caster's shadow volume (z-pass fails there, z-fail holds), or back where the camera was.
 void MainWindow::put_camera_in_shadow(bool inside) {
-    if (inside && !camera_outside_) {
-        const std::optional<Camera> moved = camera_in_shadow(scene_);
-        if (!moved) {
-            controls_->clear_camera_in_shadow();
-            return message("camera in shadow: no caster's shadow has room for the camera above the ground", true);
-        }
-        camera_outside_ = scene_.camera;
-        scene_.camera = *moved;
-    } else if (!inside && camera_outside_) {
-        scene_.camera = *std::exchange(camera_outside_, std::nullopt);
+    if (!session_.put_camera_in_shadow(inside)) {
+        controls_->clear_camera_in_shadow();
+        return message("camera in shadow: no caster's shadow has room for the camera above the ground", true);
     }
     recompute();
 }
 
 // A directional light now shines from `point` toward the scene's centre; others move there.
 void MainWindow::move_light_to(const glm::dvec3& point) {
-    const Aabb bounds = scene_.bounds();
-    const glm::dvec3 towards = 0.5 * (bounds.min + bounds.max) - point;
-    if (!scene_.light.is_directional())
-        scene_.light.position = point;
-    else if (glm::length(towards) > 0.0)
-        scene_.light.direction = glm::normalize(towards);
-    controls_->set_light_direction(scene_.light.direction);
+    session_.move_light_to(point);
+    controls_->set_light_direction(session_.scene().light.direction);
     recompute();
 }
 
@@ -409,36 +374,7 @@ void MainWindow::redraw() {
     for (ViewPanel* panel : panels_) redraw(panel);
 }
 
-// Queued: building a panel's view, rendering it and presenting it are each one turn of the event
-// loop, one panel after another, so that the GUI thread answers between them (each takes tens of
-// milliseconds for a town under a software OpenGL). A panel still queued when a newer inspection
-// lands is built from that one. (Presenting each panel before the next is rendered, rather than all
-// together, lets a software rasterizer finish one panel before it starts the next.)
-void MainWindow::redraw(ViewPanel* panel) {
-    const bool idle = undrawn_.empty();
-    // Only the front can be built already, from an older inspection: its drawing is dropped, to be
-    // built again rather than rendered and shown stale.
-    if (!idle && undrawn_.front() == panel) panel->drop_drawing();
-    if (std::find(undrawn_.begin(), undrawn_.end(), panel) == undrawn_.end()) undrawn_.push_back(panel);
-    if (idle) QTimer::singleShot(1, this, &MainWindow::redraw_next_panel);
-}
-
-void MainWindow::redraw_next_panel() {
-    if (undrawn_.empty()) return;
-    ViewPanel* panel = undrawn_.front();
-    if (panel->presenting_pending()) {
-        panel->present();
-        ++drawings_;
-        undrawn_.erase(undrawn_.begin());
-    } else if (panel->rendering_pending()) {
-        panel->render();
-        ++drawings_;
-    } else {
-        build_view_of(panel);
-        if (!panel->rendering_pending()) undrawn_.erase(undrawn_.begin());  // nothing to draw
-    }
-    if (!undrawn_.empty()) QTimer::singleShot(1, this, &MainWindow::redraw_next_panel);
-}
+void MainWindow::redraw(ViewPanel* panel) { scheduler_->redraw(panel); }
 
 ViewOptions MainWindow::view_options() const {
     ViewOptions options;
@@ -448,10 +384,10 @@ ViewOptions MainWindow::view_options() const {
 }
 
 void MainWindow::build_view_of(ViewPanel* panel) {
-    if (!inspection_) return;
+    if (!session_.inspection()) return;
     try {
-        for (const std::string& note : panel->show(*inspection_, view_options()).notes)
-            message(QString(view_title(panel->view())) + ": " + QString::fromStdString(note), false);
+        for (const std::string& note : panel->show(*session_.inspection(), view_options()).notes)
+            message(QString::fromStdString(panel->view().title + ": " + note), false);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);
     }
@@ -474,23 +410,21 @@ void MainWindow::fit_messages(int lines) {
 
 // Light space beside PPLS in the lower panels, both from the side: the scene before and after the warp.
 void MainWindow::show_before_after_warp() {
-    for (const auto& [panel, view] : {std::pair{panels_[2], ViewKind::light}, std::pair{panels_[3], ViewKind::ppls}}) {
-        panel->set_view(view);
+    for (const auto& [panel, view] : {std::pair{panels_[2], "light"}, std::pair{panels_[3], "ppls"}}) {
+        panel->set_view(view_or_throw(view));
         panel->set_preset(SpacePreset::side);
         redraw(panel);
     }
 }
 
 void MainWindow::open_dialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, "Open a scene or a mesh", QString(),
-                                     "Scenes and meshes (*.json *.obj *.ply *.stl *.gltf *.glb);;All files (*)");
+    const QString path = ask_scene_to_open(this);
     if (!path.isEmpty()) open_file(path);
 }
 
 void MainWindow::export_view(ViewPanel* panel) {
-    const QString name = QString(to_string(panel->view())) + ".png";
-    const QString path = QFileDialog::getSaveFileName(this, "Export view", name, "PNG images (*.png)");
+    const QString name = QString::fromStdString(panel->view().name) + ".png";
+    const QString path = ask_png_to_export(this, name);
     if (path.isEmpty()) return;
     try {
         write_png(panel->grab(), path.toStdString());
@@ -501,17 +435,15 @@ void MainWindow::export_view(ViewPanel* panel) {
 }
 
 void MainWindow::export_matrices(MatrixFormat format, bool to_clipboard) {
-    if (!inspection_) return;
-    if (!inspection_->has_map())
-        return message(QString::fromStdString(inspection_->name() + " has no shadow-map matrices"), true);
-    const QString text =
-        QString::fromStdString(shadowlab::export_matrices(inspection_->method->name, inspection_->setup, format));
+    const Inspection* shown = session_.inspection();
+    if (!shown) return;
+    if (!shown->has_map()) return message(QString::fromStdString(shown->name() + " has no shadow-map matrices"), true);
+    const QString text = QString::fromStdString(shadowlab::export_matrices(shown->method->name, shown->setup, format));
     if (to_clipboard) {
         QApplication::clipboard()->setText(text);
         return message("matrices copied to the clipboard", false);
     }
-    const char* suffix = format == MatrixFormat::glsl ? "glsl" : format == MatrixFormat::hlsl ? "hlsl" : "json";
-    const QString path = QFileDialog::getSaveFileName(this, "Export matrices", QString("shadow_map.") + suffix);
+    const QString path = ask_matrices_to_export(this, format);
     if (path.isEmpty()) return;
     std::ofstream out(path.toStdString());
     out << text.toStdString();
@@ -519,8 +451,7 @@ void MainWindow::export_matrices(MatrixFormat format, bool to_clipboard) {
 }
 
 void MainWindow::import_dialog() {
-    const QString path = QFileDialog::getOpenFileName(this, "Import an engine's light matrices", QString(),
-                                                      "Light matrices (*.glsl *.hlsl *.json *.txt);;All files (*)");
+    const QString path = ask_light_matrices_to_import(this);
     if (!path.isEmpty()) import_light_matrices(path);
 }
 
@@ -540,33 +471,18 @@ void MainWindow::paste_light_matrices() {
 }
 
 void MainWindow::import_camera_dialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, "Import an engine's camera (view and projection)", QString(),
-                                     "Camera matrices (*.glsl *.hlsl *.json *.txt);;All files (*)");
-    if (path.isEmpty()) return;
-    bool ok = false;
-    const QString text =
-        QInputDialog::getText(this, "The engine's conventions",
-                              "key=value, comma-separated (empty: OpenGL's), e.g. clip_depth=zero_to_one, "
-                              "reversed_z=on, clip_y=down, looks_along=plus_z",
-                              QLineEdit::Normal, QString(), &ok);
-    if (!ok) return;
-    std::map<std::string, std::string> conventions;
-    for (const QString& pair : text.split(',', Qt::SkipEmptyParts)) {
-        const QStringList kv = pair.split('=');
-        if (kv.size() != 2)
-            return message("camera conventions: expected key=value, got '" + pair.trimmed() + "'", true);
-        conventions[kv[0].trimmed().toStdString()] = kv[1].trimmed().toStdString();
+    try {
+        if (const std::optional<CameraMatricesChoice> chosen = ask_camera_matrices(this))
+            import_camera_matrices(chosen->file, chosen->conventions);
+    } catch (const std::exception& e) {
+        message(QString::fromStdString(e.what()), true);
     }
-    import_camera_matrices(path, conventions);
 }
 
 void MainWindow::import_camera_matrices(const QString& file, const std::map<std::string, std::string>& conventions) {
     try {
-        const Camera imported =
-            import_camera(file.toStdString(), camera_conventions_from(conventions), scene_.bounds());
-        scene_.camera = imported;
-        camera_outside_.reset();
+        session_.replace_camera(
+            import_camera(file.toStdString(), camera_conventions_from(conventions), session_.scene().bounds()));
         controls_->clear_camera_in_shadow();
         for (ViewPanel* panel : panels_) panel->forget_camera();
         message("camera from " + file, false);
@@ -577,17 +493,14 @@ void MainWindow::import_camera_matrices(const QString& file, const std::map<std:
 }
 
 void MainWindow::save_scene_dialog() {
-    if (!gltf_) return;
-    const QString path = QFileDialog::getSaveFileName(this, "Save the scene (a JSON referencing its glTF file)",
-                                                      QString::fromStdString(scene_.name) + ".json", "Scenes (*.json)");
+    if (!session_.gltf()) return;
+    const QString path = ask_scene_to_save(this, QString::fromStdString(session_.scene().name));
     if (!path.isEmpty()) save_scene(path);
 }
 
 void MainWindow::save_scene(const QString& json_file) {
-    if (!gltf_) return message("only a glTF scene is saved (as a JSON referencing its file)", true);
     try {
-        save_scene_referencing_gltf(json_file.toStdString(), gltf_->reference.gltf_file, gltf_->reference.choice,
-                                    scene_);
+        session_.save_scene(json_file.toStdString());
         message("wrote " + json_file, false);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);
@@ -617,7 +530,7 @@ void MainWindow::restore_settings() {
     for (size_t i = 0; i < splitters_.size(); ++i)
         splitters_[i]->restoreState(settings.value(QString("splitter%1").arg(i)).toByteArray());
     for (size_t i = 0; i < panels_.size(); ++i) {
-        const auto view = view_named(settings.value(QString("panel%1").arg(i)).toString().toStdString());
+        const View* view = find_view(settings.value(QString("panel%1").arg(i)).toString().toStdString());
         if (view) panels_[i]->set_view(*view);
     }
     controls_->set_method(settings.value("method", "focused").toString());
@@ -631,7 +544,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     for (size_t i = 0; i < splitters_.size(); ++i)
         settings.setValue(QString("splitter%1").arg(i), splitters_[i]->saveState());
     for (size_t i = 0; i < panels_.size(); ++i)
-        settings.setValue(QString("panel%1").arg(i), to_string(panels_[i]->view()));
+        settings.setValue(QString("panel%1").arg(i), QString::fromStdString(panels_[i]->view().name));
     const InspectionRequest request = controls_->request();
     settings.setValue("method", QString::fromStdString(request.method));
     settings.setValue("resolution", request.resolution);

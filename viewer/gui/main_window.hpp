@@ -1,10 +1,12 @@
 #pragma once
-// The inspector's window: controls on the left, four linked views in the middle, the step player
-// on the right (the full height), messages (one line until an error) and the plot below. Every
-// change recomputes the method once, off the GUI thread (BackgroundInspection: the latest change
-// wins, a progress line shows work over 100 ms), and redraws all views from that one Inspection. The method
-// computes with the scene camera's aspect, as the CLI does, unless the user unlocks it: then with
-// the Camera panel's shape, recomputed as the panel is resized.
+// The inspector's window, its shell: controls on the left, four linked views in the middle, the
+// step player on the right (the full height), messages (one line until an error) and the plot
+// below, the menus and their dialogs (gui/file_dialogs, gui/camera_matrices_dialog). What is open
+// is the Session's (model/session: the scene, the inspection shown, a failed open rolled back).
+// Every change recomputes the method once, off the GUI thread (BackgroundInspection: the latest
+// change wins, a progress line shows work over 100 ms), and the PanelScheduler redraws all views
+// from that one Inspection. The method computes with the scene camera's aspect, as the CLI does,
+// unless the user unlocks it: then with the Camera panel's shape, recomputed as the panel is resized.
 #include <map>
 #include <memory>
 #include <optional>
@@ -13,9 +15,7 @@
 
 #include "gui/background_inspection.hpp"
 #include "io/matrix_export.hpp"
-#include "scene/gltf_reference.hpp"
-#include "scene/gltf_scene.hpp"
-#include "model/inspection.hpp"
+#include "model/session.hpp"
 
 class QAction;
 class QMenu;
@@ -27,6 +27,7 @@ class QTimer;
 namespace shadowlab {
 
 class ControlsPanel;
+class PanelScheduler;
 class ScenePanel;
 class PlotPanel;
 class StepPlayer;
@@ -55,15 +56,15 @@ public:
     // The scene as a JSON referencing its glTF file, with the camera, light and roles chosen.
     void save_scene(const QString& json_file);
 
-    const Scene& scene() const { return scene_; }
-    const Inspection* inspection() const { return inspection_.get(); }  // the one the views show
+    const Scene& scene() const { return session_.scene(); }
+    const Inspection* inspection() const { return session_.inspection(); }  // the one the views show
     // A change's inspection has not landed, or not every panel is drawn from it, or a panel's resize
     // has yet to settle into a change of the Camera view's aspect.
     bool computing() const;
     // How many turns of the event loop have drawn with OpenGL so far (a panel rendered, or presented):
     // what the GUI thread spends on drawing can be told from the rest
     // (tests/gui/window_drag_test.cpp).
-    int drawings() const { return drawings_; }
+    int drawings() const;
     ControlsPanel* controls() const { return controls_; }
     StepPlayer* steps() const { return steps_; }
     PlotPanel* plot() const { return plot_; }
@@ -85,7 +86,7 @@ private:
 
     void build_menus();
     AspectInForce aspect_in_force() const;
-    ViewPanel* camera_panel() const;  // the first panel showing the Camera view, or nullptr
+    ViewPanel* camera_panel() const;  // the first panel whose view steers the scene camera (Camera), or nullptr
     void settle_resize();
     void recompute();
     void land(std::shared_ptr<const Inspection> inspection);
@@ -98,7 +99,6 @@ private:
     void put_camera_in_shadow(bool inside);
     void redraw();
     void redraw(ViewPanel* panel);
-    void redraw_next_panel();
     void build_view_of(ViewPanel* panel);
     void message(const QString& text, bool error);
     void fit_messages(int lines);
@@ -108,12 +108,7 @@ private:
     void import_dialog();
     void import_camera_dialog();
     void save_scene_dialog();
-    // The glTF file the scene comes from, which of its cameras and lights it took, and all it holds.
-    struct GltfSource {
-        GltfReference reference;
-        GltfContents contents;
-    };
-    void replace_scene(Scene scene, std::optional<GltfSource> gltf, const QString& opened_path);
+    void scene_replaced();
     void choose_from_gltf(const SceneChoice& choice);
     void set_roles(int object, bool casts, bool receives);
     void show_scene_parts();
@@ -121,25 +116,12 @@ private:
     void rebuild_recent_menu();
     void restore_settings();
 
-    Scene scene_;
-    std::optional<Camera> camera_outside_;  // the camera before "Camera in shadow" moved it
-    // A scene put in place whose inspection has not landed yet (a file opened: its path), and the
-    // scene it replaced.
-    struct Opening {
-        QString path;
-        Scene previous;
-        std::optional<GltfSource> previous_gltf;
-        std::optional<Camera> previous_camera_outside;
-    };
-    std::optional<GltfSource> gltf_;
-    std::optional<Opening> opening_;
-    std::shared_ptr<const Inspection> inspection_;
+    Session session_;
     BackgroundInspection* computing_;
+    PanelScheduler* scheduler_;
     const char* aspect_source_ = "";  // where the newest change's camera aspect came from
     QTimer* progress_timer_;          // while computing: the progress line after 100 ms
     QProgressBar* progress_bar_;
-    int drawings_ = 0;
-    std::vector<ViewPanel*> undrawn_;  // the panels still to build, render and present from the inspection shown
     ControlsPanel* controls_;
     ScenePanel* scene_panel_;
     QAction* save_scene_ = nullptr;

@@ -26,11 +26,6 @@
 namespace shadowlab {
 namespace {
 
-// The views drawn in a space of the method (World, Light space, PPLS): they take a preset.
-bool is_space_view(ViewKind view) {
-    return view == ViewKind::world || view == ViewKind::light || view == ViewKind::ppls;
-}
-
 const char* preset_title(SpacePreset preset) {
     switch (preset) {
         case SpacePreset::orbit: return "Orbit";
@@ -42,7 +37,7 @@ const char* preset_title(SpacePreset preset) {
 
 }  // namespace
 
-ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
+ViewPanel::ViewPanel(const View& initial, QWidget* parent)
     : QWidget(parent),
       chooser_(new QComboBox(this)),
       error_(new QComboBox(this)),
@@ -52,7 +47,8 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
       preset_(new QComboBox(this)),
       scene_in_ppls_(new QCheckBox("Scene in PPLS", this)),
       widget_(new QVTKOpenGLNativeWidget(this)) {
-    for (ViewKind v : all_views()) chooser_->addItem(view_title(v), static_cast<int>(v));
+    for (const View& v : all_views())
+        chooser_->addItem(QString::fromStdString(v.title), QString::fromStdString(v.name));
     chooser_->setObjectName("viewChooser");
     error_->addItem("Automatic", static_cast<int>(ErrorShown::automatic));
     error_->addItem("Verdicts", static_cast<int>(ErrorShown::verdicts));
@@ -129,10 +125,10 @@ ViewPanel::ViewPanel(ViewKind initial, QWidget* parent)
     window_->GetInteractor()->AddObserver(vtkCommand::EndInteractionEvent, on_end);
 }
 
-ViewKind ViewPanel::view() const { return static_cast<ViewKind>(chooser_->currentData().toInt()); }
+const View& ViewPanel::view() const { return view_or_throw(chooser_->currentData().toString().toStdString()); }
 
-void ViewPanel::set_view(ViewKind view) {
-    chooser_->setCurrentIndex(chooser_->findData(static_cast<int>(view)));
+void ViewPanel::set_view(const View& view) {
+    chooser_->setCurrentIndex(chooser_->findData(QString::fromStdString(view.name)));
     forget_camera();
 }
 
@@ -154,12 +150,13 @@ void ViewPanel::resizeEvent(QResizeEvent* event) {
 
 // Each view shows the choosers it reads, however it was chosen.
 void ViewPanel::show_choosers_for_view() {
-    error_->setVisible(view() == ViewKind::error);
-    aliasing_->setVisible(view() == ViewKind::error);
-    texture_->setVisible(view() == ViewKind::shadow_map);
-    overlay_->setVisible(view() == ViewKind::camera);
-    preset_->setVisible(is_space_view(view()));
-    scene_in_ppls_->setVisible(view() == ViewKind::ppls);
+    const ViewChoosers& shown = view().choosers;
+    error_->setVisible(shown.error);
+    aliasing_->setVisible(shown.aliasing);
+    texture_->setVisible(shown.texture);
+    overlay_->setVisible(shown.overlay);
+    preset_->setVisible(shown.preset);
+    scene_in_ppls_->setVisible(shown.scene_in_ppls);
 }
 
 ViewOptions ViewPanel::options_for(const ViewOptions& options, double aspect) const {
@@ -181,29 +178,30 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     window_->AddRenderer(renderer);
     scene_renderer_ = renderer;
     camera_origin_ = inspection.scene.camera.position;  // the Camera view draws relative to it
-    if (looks_through_scene_camera(view())) letterbox(renderer, inspection.scene.camera);
+    const View& shown = view();
+    if (shown.interaction.through_scene_camera) letterbox(renderer, inspection.scene.camera);
     const ViewOptions sized = options_for(options, inspection.scene.camera.aspect);
     // A chooser the inspection gives nothing to choose is greyed: m beside the signed error, the
     // moments of a filter that reads none.
     aliasing_->setEnabled(!shows_signed_error(inspection, sized.error));
     texture_->setEnabled(inspection.has_map() && inspection.lookup.filter.reads_moments());
-    const ViewReport report = build_view(renderer, inspection, view(), sized);
-    if (kept_camera_ && is_space_view(view())) {
+    const ViewReport report = build_view(renderer, inspection, shown, sized);
+    const ViewDrag drag = shown.interaction.drag;
+    if (kept_camera_ && drag == ViewDrag::orbits_kept) {
         kept_camera_->apply_to(renderer->GetActiveCamera());
         renderer->ResetCameraClippingRange();
     }
-    const bool image = view() == ViewKind::shadow_map || view() == ViewKind::error || view() == ViewKind::stencil;
-    if (image)
+    if (drag == ViewDrag::pans_image)
         window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleImage>());
     else
         window_->GetInteractor()->SetInteractorStyle(vtkNew<vtkInteractorStyleTrackballCamera>());
     handles_.clear();
-    if (view() == ViewKind::world) add_world_handles(inspection);
+    if (shown.interaction.handles) add_world_handles(inspection);
     drawing_ = Drawing::render;
     return report;
 }
 
-// Two draggable handles in the World view: the light (where its marker is drawn) and the camera,
+// Two draggable handles (the World view's): the light (where its marker is drawn) and the camera,
 // balls of a fixed size on screen whatever the scene's extent (a sphere handle's size is in pixels:
 // VTK turns it into a world radius from the view's camera when it builds the ball).
 void ViewPanel::add_world_handles(const Inspection& in) {
@@ -239,16 +237,17 @@ void ViewPanel::add_world_handles(const Inspection& in) {
     }
 }
 
-// The end of a drag: in the Camera view it moves the scene's camera; in a space view the panel
-// keeps the camera where the user left it.
+// The end of a drag: in a view that steers the scene's camera (the Camera view) it moves it; in
+// one that keeps its orbit (a space view) the panel keeps the camera where the user left it.
 void ViewPanel::interaction_ended() {
     if (!scene_renderer_) return;
     vtkCamera* c = scene_renderer_->GetActiveCamera();
-    if (is_space_view(view())) {
+    const ViewDrag drag = view().interaction.drag;
+    if (drag == ViewDrag::orbits_kept) {
         kept_camera_ = CameraPose::of(c);
         return;
     }
-    if (view() != ViewKind::camera) return;
+    if (drag != ViewDrag::steers_scene_camera) return;
     const double* p = c->GetPosition();
     const double* f = c->GetFocalPoint();
     const double* u = c->GetViewUp();

@@ -1,9 +1,11 @@
 #pragma once
-// One view of the window: a chooser for which view it shows (and, for the Error view, verdicts or
-// the signed visibility error, and which aliasing its heat map paints; for the Shadow map view, the
-// depth or the moments a vsm or evsm filter reads; for World, Light space and PPLS, how the camera
-// looks at it; for PPLS, whether the scene is drawn), over a VTK widget drawing it. An orbit the user leaves in
-// World, Light space or PPLS is kept across redraws until the view or its preset changes.
+// One view of the window: a chooser for which view it shows, and beside it the choosers the view's
+// descriptor names (ViewChoosers: for the Error view, verdicts or the signed visibility error, and
+// which aliasing its heat map paints; for the Shadow map view, the depth or the moments a vsm or
+// evsm filter reads; for World, Light space and PPLS, how the camera looks at it; for PPLS, whether
+// the scene is drawn), over a VTK widget drawing it. A drag does what the descriptor says
+// (ViewDrag): an orbit the user leaves in a view that keeps it is kept across redraws until the
+// view or its preset changes.
 #include <optional>
 #include <vector>
 #include <QWidget>
@@ -25,10 +27,10 @@ namespace shadowlab {
 class ViewPanel : public QWidget {
     Q_OBJECT
 public:
-    ViewPanel(ViewKind initial, QWidget* parent = nullptr);
+    ViewPanel(const View& initial, QWidget* parent = nullptr);
 
-    ViewKind view() const;
-    void set_view(ViewKind view);
+    const View& view() const;
+    void set_view(const View& view);
     SpacePreset preset() const;
     void set_preset(SpacePreset preset);
     void forget_camera();        // the next redraw places the view's default camera (a new scene)
@@ -50,10 +52,10 @@ public:
 
 signals:
     void viewChosen();
-    // The user moved the camera in the Camera view: its new position, target and up.
+    // The user moved the camera in a view that steers it (the Camera view): its new position, target and up.
     void cameraMoved(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up);
-    // The user dragged a handle in the World view: the light's (the world point it now sits at)
-    // or the camera's (its new position; the target stays).
+    // The user dragged a handle (ViewInteraction::handles, the World view's): the light's (the world point it now sits
+    // at) or the camera's (its new position; the target stays).
     void lightHandleMoved(const glm::dvec3& point);
     void cameraHandleMoved(const glm::dvec3& position);
     void resized();  // the Camera view's aspect may follow the panel's shape
@@ -75,7 +77,7 @@ private:
     QComboBox* overlay_;   // the Camera view: shadows alone, or the map per pixel, or texels per pixel
     QComboBox* preset_;    // World, Light space, PPLS: orbit, from the light, side
     QCheckBox* scene_in_ppls_;
-    std::optional<CameraPose> kept_camera_;  // the user's, in a space view
+    std::optional<CameraPose> kept_camera_;  // the user's, in a view that keeps its orbit
     QVTKOpenGLNativeWidget* widget_;
     vtkGenericOpenGLRenderWindow* window_;
     vtkRenderer* scene_renderer_ = nullptr;  // the view's own, the first of the window's renderers

@@ -104,8 +104,6 @@ void install_stencil_pass(vtkRenderer* renderer, const GeometryResult& technique
     renderer->SetPass(pass);
 }
 
-}  // namespace
-
 // Drawn in camera-relative coordinates (the eye at 0): VTK and the GPU passes work in float32, which
 // steps by 0.06 units a million units from the origin; near the eye it is as fine as anywhere.
 ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
@@ -137,6 +135,17 @@ ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const 
         install_stencil_pass(renderer, *in.geometry, options, origin, light);
     if (options.lit_mask) renderer->SetBackground(1.0, 0.0, 0.0);  // nothing visible: red, neither lit nor shadowed
     return {};
+}
+
+}  // namespace
+
+View camera_view() {
+    return {.name = "camera",
+            .title = "Camera",
+            .prepare = {},  // drawn on the GPU
+            .build = build_camera_view,
+            .choosers = {.overlay = true, .shadow_only = true},
+            .interaction = {.through_scene_camera = true, .drag = ViewDrag::steers_scene_camera}};
 }
 
 }  // namespace shadowlab

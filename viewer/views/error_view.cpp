@@ -164,6 +164,8 @@ glm::ivec2 judged_image_size(const Inspection& in, const ViewOptions& options) {
                                       : std::max(1, static_cast<int>(std::lround(width / in.scene.camera.aspect)))};
 }
 
+namespace {
+
 ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
     const glm::dvec3 background = unit_colour(colours::kNotVisible);
     renderer->SetBackground(background.r, background.g, background.b);
@@ -190,6 +192,21 @@ ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const V
                   aliasing.stats.p95);
     add_caption(renderer, "Error — " + in.name() + " " + std::to_string(in.resolution) + "²: " + shares(e) + caption);
     return {};
+}
+
+}  // namespace
+
+View error_view() {
+    return {.name = "error",
+            .title = "Error",
+            .prepare =
+                [](const Inspection& in, const ViewOptions& options) {
+                    const glm::ivec2 size = judged_image_size(in, options);
+                    in.error(size.x, size.y);
+                },
+            .build = build_error_view,
+            .choosers = {.error = true, .aliasing = true},
+            .interaction = {.drag = ViewDrag::pans_image}};
 }
 
 }  // namespace shadowlab

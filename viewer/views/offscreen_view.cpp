@@ -7,7 +7,8 @@
 
 namespace shadowlab {
 
-RgbImage render_view(const Inspection& inspection, ViewKind view, const ViewOptions& options, int width, int height) {
+RgbImage render_view(const Inspection& inspection, const View& view, const ViewOptions& options, int width,
+                     int height) {
     const XDisplay x("views");  // before VTK would open one
     vtkNew<vtkRenderWindow> window;
     // No interactor: initializing one syncs with an X window an offscreen render never maps.

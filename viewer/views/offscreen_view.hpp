@@ -6,6 +6,6 @@
 namespace shadowlab {
 
 // Throws std::runtime_error without an X display, std::invalid_argument for an unknown step.
-RgbImage render_view(const Inspection& inspection, ViewKind view, const ViewOptions& options, int width, int height);
+RgbImage render_view(const Inspection& inspection, const View& view, const ViewOptions& options, int width, int height);
 
 }  // namespace shadowlab

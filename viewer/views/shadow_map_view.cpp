@@ -399,10 +399,6 @@ PaintedTexture painted_texture(vtkRenderer* renderer, const Inspection& in, Text
     return painted_moments(renderer, in, which);
 }
 
-}  // namespace
-
-const glm::dvec3 kTileBorder{0.2, 0.9, 0.5};
-
 ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
     renderer->SetBackground(kBackground.r, kBackground.g, kBackground.b);
     if (!in.has_map()) {
@@ -452,6 +448,22 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
                               (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
                               "texel grid when zoomed in)" + sagittas);
     return report;
+}
+
+}  // namespace
+
+const glm::dvec3 kTileBorder{0.2, 0.9, 0.5};
+
+View shadow_map_view() {
+    return {.name = "shadowmap",
+            .title = "Shadow map",
+            .prepare =
+                [](const Inspection& in, const ViewOptions&) {
+                    if (in.has_map()) in.depth();
+                },
+            .build = build_shadow_map_view,
+            .choosers = {.texture = true},
+            .interaction = {.drag = ViewDrag::pans_image}};
 }
 
 }  // namespace shadowlab

@@ -53,11 +53,11 @@ void look_orthographic(vtkRenderer* renderer, const Aabb& framed, const glm::dve
 
 // The World view from behind, above and beside the scene camera; the light spaces from the
 // light's side (their +z runs with the light), slightly tilted to show depth.
-void look_oblique(vtkRenderer* renderer, const Aabb& framed, ViewKind view, const SpaceFrame& frame) {
+void look_oblique(vtkRenderer* renderer, const Aabb& framed, Space space, const SpaceFrame& frame) {
     // The camera's right: across its view and its image's up (an axis when it looks straight down).
     const glm::dvec3 right = glm::cross(frame.view, perpendicular(frame.view, glm::dvec3(0.0, 1.0, 0.0)));
     glm::dvec3 direction =
-        view == ViewKind::world ? frame.view + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * right : glm::dvec3(0.25, 0.35, 1.0);
+        space == Space::world ? frame.view + glm::dvec3(0.0, -0.8, 0.0) + 0.6 * right : glm::dvec3(0.25, 0.35, 1.0);
     direction = glm::normalize(direction);
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->ParallelProjectionOff();
@@ -70,11 +70,11 @@ void look_oblique(vtkRenderer* renderer, const Aabb& framed, ViewKind view, cons
 
 }  // namespace
 
-void place_space_camera(vtkRenderer* renderer, const SpaceFrame& frame, SpacePreset preset, ViewKind view) {
+void place_space_camera(vtkRenderer* renderer, const SpaceFrame& frame, SpacePreset preset, Space space) {
     const Aabb& framed = frame.clip;                    // all that is drawn: nothing runs out of the picture
     if (frame.atlas) preset = SpacePreset::from_light;  // the texture's own picture (space_frame.cpp)
     switch (preset) {
-        case SpacePreset::orbit: look_oblique(renderer, framed, view, frame); break;
+        case SpacePreset::orbit: look_oblique(renderer, framed, space, frame); break;
         case SpacePreset::from_light: {
             // In the light spaces the map's v runs along y: the picture is the map's own, u right, v up.
             const glm::dvec3 up = frame.space == Space::world ? frame.view : glm::dvec3(0.0, 1.0, 0.0);

@@ -15,10 +15,6 @@ constexpr double kFlattest = 0.2;     // a margin is at least kMargin of this sh
 constexpr double kLightArrow = 0.25;  // the light arrow's length, as a share of the widest extent
 constexpr double kContext = 10.0;     // context joins the region while it stays within this many times its size
 
-Space space_of(ViewKind view) {
-    return view == ViewKind::world ? Space::world : view == ViewKind::light ? Space::light : Space::ppls;
-}
-
 std::optional<glm::dvec3> placed(const glm::dmat4& space_from_world, const glm::dvec3& world) {
     const glm::dvec4 h = space_from_world * glm::dvec4(world, 1.0);
     if (!(h.w > 0.0)) return std::nullopt;
@@ -122,10 +118,10 @@ void join(Aabb& region, const Aabb& context) {
 // volume in PPLS, with B as the context it was cut from (XPSM's focus region is a small part of
 // it). The chosen step's shapes join, so that its idea (the plane where w = 0, say) is in the
 // picture, unless a warp stretches them toward w = 0 far beyond the region.
-Aabb framed_region(const Inspection& in, ViewKind view, const glm::dmat4& from_world, const Step* chosen) {
+Aabb framed_region(const Inspection& in, Space space, const glm::dmat4& from_world, const Step* chosen) {
     const Aabb body = box_in_space(from_world, body_points(in));
-    Aabb region = view == ViewKind::world ? box_in_space(from_world, world_points(in)) : body;
-    if (view == ViewKind::ppls && in.has_map())
+    Aabb region = space == Space::world ? box_in_space(from_world, world_points(in)) : body;
+    if (space == Space::ppls && in.has_map())
         if (const Aabb volumes = box_in_space(from_world, map_volume_corners(in.setup)); !volumes.empty()) {
             region = volumes;
             join(region, body);
@@ -171,8 +167,8 @@ bool unit_space_is_an_atlas(const Inspection& in, Space space) {
                        [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
 }
 
-std::optional<SpaceFrame> space_frame(const Inspection& in, ViewKind view, const Step* chosen) {
-    SpaceFrame frame{.space = space_of(view)};
+std::optional<SpaceFrame> space_frame(const Inspection& in, Space space, const Step* chosen) {
+    SpaceFrame frame{.space = space};
     auto from_world = world_to(in, frame.space);
     // A map with no warp has no post-perspective space of its own: its PPLS is the unit space.
     if (!from_world && frame.space == Space::ppls && in.has_map()) {
@@ -183,7 +179,7 @@ std::optional<SpaceFrame> space_frame(const Inspection& in, ViewKind view, const
     frame.from_world = *from_world;
     frame.atlas = unit_space_is_an_atlas(in, frame.space);
     frame.region =
-        frame.atlas ? Aabb{glm::dvec3(0.0), glm::dvec3(1.0)} : framed_region(in, view, frame.from_world, chosen);
+        frame.atlas ? Aabb{glm::dvec3(0.0), glm::dvec3(1.0)} : framed_region(in, space, frame.from_world, chosen);
     if (frame.region.empty()) frame.region = box_in_space(frame.from_world, {glm::dvec3(0.0)});
     // A margin on every axis, at least a share of the widest so that a flat region keeps some depth.
     const glm::dvec3 extent = frame.region.extent();

@@ -39,12 +39,12 @@ struct SpaceFrame {
 // the steps' discs alone; nothing of the world can be carried there.
 bool unit_space_is_an_atlas(const Inspection& in, Space space);
 
-// The frame of a view showing the chosen step (null: none); nullopt when the method has no such space
-// (a technique's Light space and PPLS).
-std::optional<SpaceFrame> space_frame(const Inspection& in, ViewKind view, const Step* chosen);
+// The frame of the view drawing in `space` (world, light or ppls) showing the chosen step (null: none); nullopt when
+// the method has no such space (a technique's Light space and PPLS).
+std::optional<SpaceFrame> space_frame(const Inspection& in, Space space, const Step* chosen);
 
 // Orthographic along the light or from the side of the light and view plane, or the oblique orbit.
-void place_space_camera(vtkRenderer* renderer, const SpaceFrame& frame, SpacePreset preset, ViewKind view);
+void place_space_camera(vtkRenderer* renderer, const SpaceFrame& frame, SpacePreset preset, Space space);
 
 // What a shape stands for fixes its colour and its legend line in every space view.
 struct RoleStyle {

@@ -5,6 +5,7 @@
 // caption says which step it is, its formula and its values. A geometric technique has no map and
 // no light spaces: the World view shows its steps.
 #include <algorithm>
+#include <stdexcept>
 
 #include <vtkRenderer.h>
 
@@ -16,6 +17,16 @@ namespace {
 
 const glm::dvec3 kMissed{1.0, 0.2, 0.8}, kAxes{0.75, 0.75, 0.75};
 
+// The space views: each draws in one space of the method.
+const char* space_view_title(Space space) {
+    switch (space) {
+        case Space::world: return "World";
+        case Space::light: return "Light space";
+        case Space::ppls: return "PPLS";
+        default: throw std::logic_error(std::string("no view draws in ") + to_string(space) + " space");
+    }
+}
+
 // A light inside the scene's bounds (a lamp in a room): walls around it would hide every step.
 bool light_indoors(const Scene& scene) {
     return !scene.light.is_directional() && scene.bounds().contains(scene.light.position);
@@ -24,11 +35,11 @@ bool light_indoors(const Scene& scene) {
 // The scene's triangles, cut to the frame's clip box (in PPLS, points near w = 0 would otherwise
 // fly off toward infinity); opaque in the World unless the light is indoors, translucent where the
 // step shapes matter more.
-void draw_scene(SpaceCanvas& canvas, const Inspection& in, ViewKind view, const ViewOptions& options) {
-    if (view == ViewKind::ppls && !options.scene_in_ppls) return;
+void draw_scene(SpaceCanvas& canvas, const Inspection& in, Space space, const ViewOptions& options) {
+    if (space == Space::ppls && !options.scene_in_ppls) return;
     const Placed scene = triangles_polydata(in.triangles, std::vector<bool>(in.scene.objects.size(), true),
                                             object_colours(in.scene), canvas.frame().placement_from(glm::dmat4(1.0)));
-    const bool opaque = view == ViewKind::world && !light_indoors(in.scene);
+    const bool opaque = space == Space::world && !light_indoors(in.scene);
     canvas.draw(scene, {.colour = glm::dvec3(1.0), .opacity = opaque ? 1.0 : 0.35}, "");
 }
 
@@ -85,14 +96,14 @@ void draw_missed_points(SpaceCanvas& canvas, const Inspection& in) {
 
 // What the steps are drawn over: the scene, the camera's frustum, the maps' volumes, the input
 // boxes (World), the light and the space's axes.
-void draw_context(SpaceCanvas& canvas, const Inspection& in, ViewKind view, const ViewOptions& options,
+void draw_context(SpaceCanvas& canvas, const Inspection& in, Space space, const ViewOptions& options,
                   ViewReport& report) {
-    draw_scene(canvas, in, view, options);
+    draw_scene(canvas, in, space, options);
     const RoleStyle& camera = role_style(Role::view);
     canvas.draw(geometry_polydata(in.inputs.frustum, canvas.frame().placement_from(glm::dmat4(1.0))),
                 {.colour = camera.colour}, camera.legend);
     if (in.has_map()) draw_map_volumes(canvas, in.setup, report);
-    if (view == ViewKind::world) {
+    if (space == Space::world) {
         draw_input_boxes(canvas, in.inputs.casters, Role::casters);
         draw_input_boxes(canvas, in.inputs.receivers, Role::receivers);
     }
@@ -122,12 +133,12 @@ std::string values_text(const Step& step) {
 }
 
 // "PPLS · lispsm · Step 8 of 10 · Perspective warp P", the step's formula, its values.
-std::string caption(const Inspection& in, ViewKind view, const SpaceFrame& frame, const ViewOptions& options,
+std::string caption(const Inspection& in, Space space, const SpaceFrame& frame, const ViewOptions& options,
                     size_t chosen) {
-    std::string title = view_title(view);
+    std::string title = space_view_title(space);
     if (frame.atlas)
         title += " (the atlas: paraboloids reach it by no matrix)";
-    else if (view == ViewKind::ppls && frame.space == Space::unit)
+    else if (space == Space::ppls && frame.space == Space::unit)
         title += " (no warp: the map's unit space)";
     title += std::string(" · ") + in.name() + " · " + to_string(options.preset);
     const std::vector<Step>& steps = in.trace.steps();
@@ -139,17 +150,15 @@ std::string caption(const Inspection& in, ViewKind view, const SpaceFrame& frame
     return text;
 }
 
-}  // namespace
-
-ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options) {
+ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, Space space, const ViewOptions& options) {
     ViewReport report;
     renderer->SetBackground(kSpaceBackground.r, kSpaceBackground.g, kSpaceBackground.b);
     const size_t chosen = chosen_step(in.trace, options.step);
     const std::vector<Step>& steps = in.trace.steps();
-    const std::optional<SpaceFrame> frame = space_frame(in, view, chosen < steps.size() ? &steps[chosen] : nullptr);
+    const std::optional<SpaceFrame> frame = space_frame(in, space, chosen < steps.size() ? &steps[chosen] : nullptr);
     if (!frame) {
         add_caption(renderer,
-                    in.title() + ": no " + view_title(view) +
+                    in.title() + ": no " + space_view_title(space) +
                         (in.has_map() ? " (the method has no such space)"
                                       : " (a geometric technique: no light space, no map; see the World view)"));
         return report;
@@ -159,13 +168,33 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKin
     SpaceCanvas canvas(renderer, *frame);
     draw_steps(canvas, in, 0, chosen, chosen);
     const bool world_context = !unit_space_is_an_atlas(in, frame->space);
-    if (world_context) draw_context(canvas, in, view, options, report);
+    if (world_context) draw_context(canvas, in, space, options, report);
     draw_steps(canvas, in, chosen, chosen + 1, chosen);
     if (world_context && in.has_map()) draw_missed_points(canvas, in);
     canvas.finish();
-    place_space_camera(renderer, *frame, options.preset, view);
-    add_caption(renderer, caption(in, view, *frame, options, chosen));
+    place_space_camera(renderer, *frame, options.preset, space);
+    add_caption(renderer, caption(in, space, *frame, options, chosen));
     return report;
 }
+
+// One descriptor for the three: they differ in their space, PPLS also in the scene it may leave out.
+View space_view(const char* name, Space space, ViewChoosers choosers) {
+    return {.name = name,
+            .title = space_view_title(space),
+            .prepare =
+                [](const Inspection& in, const ViewOptions&) {
+                    if (in.has_map()) visible_points_missed(in);  // marked where they are in shadow
+                },
+            .build = [space](vtkRenderer* renderer, const Inspection& in,
+                             const ViewOptions& options) { return build_space_view(renderer, in, space, options); },
+            .choosers = choosers,
+            .interaction = {.draws_steps = true, .drag = ViewDrag::orbits_kept, .handles = space == Space::world}};
+}
+
+}  // namespace
+
+View world_view() { return space_view("world", Space::world, {.preset = true}); }
+View light_space_view() { return space_view("light", Space::light, {.preset = true}); }
+View ppls_view() { return space_view("ppls", Space::ppls, {.preset = true, .scene_in_ppls = true}); }
 
 }  // namespace shadowlab

@@ -49,9 +49,7 @@ const char* rule_name(StencilRule rule) {
     return rule == StencilRule::zpass ? "z-pass" : rule == StencilRule::zfail ? "z-fail" : "cover";
 }
 
-}  // namespace
-
-ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in) {
+ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions&) {
     renderer->SetBackground(0.12, 0.13, 0.16);
     if (in.has_map()) {
         add_caption(renderer, in.title() + ": no stencil count (a shadow map; see the Shadow map view)");
@@ -78,6 +76,17 @@ ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in) {
                   in.name().c_str(), rule_name(t.rule), seen.width, seen.height, shadowed, c.disagree, largest);
     add_caption(renderer, caption);
     return {};
+}
+
+}  // namespace
+
+View stencil_view() {
+    return {.name = "stencil",
+            .title = "Stencil count",
+            .prepare = {},  // a technique's own image, traced when it ran
+            .build = build_stencil_view,
+            .choosers = {},
+            .interaction = {.drag = ViewDrag::pans_image}};
 }
 
 }  // namespace shadowlab

@@ -239,9 +239,7 @@ std::string caption(const Inspection& in, size_t surface, size_t drawn, int stri
     return text + "the scene dim, from its camera";
 }
 
-}  // namespace
-
-ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in) {
+ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions&) {
     renderer->SetBackground(kSpaceBackground.r, kSpaceBackground.g, kSpaceBackground.b);
     // Through the scene's camera, drawn relative to the eye (float32 near it is as fine as anywhere).
     const glm::dvec3 origin = in.scene.camera.position;
@@ -278,6 +276,20 @@ ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in) {
     add_caption(renderer, caption(in, surface_texels(in.setup, surfaces, 1), texels.size(), stride,
                                   texels_per_pixel(texels, in.scene.camera, renderer->GetSize())));
     return report;
+}
+
+}  // namespace
+
+View texels_view() {
+    return {.name = "texels",
+            .title = "Texels",
+            .prepare =
+                [](const Inspection& in, const ViewOptions&) {
+                    if (in.has_map()) in.surface_depth();
+                },
+            .build = build_texels_view,
+            .choosers = {},
+            .interaction = {.through_scene_camera = true, .drag = ViewDrag::orbits}};
 }
 
 }  // namespace shadowlab

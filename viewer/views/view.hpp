@@ -1,78 +1,82 @@
 #pragma once
-// The inspector's views, each drawn into a VTK renderer from one Inspection: the same code serves
-// the window and `shadowlab render`.
-#include <optional>
+// The inspector's views, each one descriptor registered once (views/view_registry.cpp): its name,
+// its title, what it reads from the inspection, how it draws into a VTK renderer, and which
+// choosers and interactions the window gives it. The same descriptor serves the window and
+// `shadowlab render`; nothing else names a view in code.
+#include <deque>
+#include <functional>
 #include <string>
-#include <vector>
 
-#include "model/inspection.hpp"
-#include "render/map_overlay.hpp"
+#include "views/view_options.hpp"
 
 class vtkRenderer;
 
 namespace shadowlab {
 
-enum class ViewKind { camera, world, light, ppls, shadow_map, texels, error, stencil };
-
-const char* to_string(ViewKind view);                         // as on the command line: "shadowmap"
-const char* view_title(ViewKind view);                        // as in the window: "Shadow map"
-std::optional<ViewKind> view_named(const std::string& name);  // nullopt for an unknown name
-const std::vector<ViewKind>& all_views();
-// Does the view draw the chosen trace step (World, Light space, PPLS)? The others do not change with it.
-bool shows_steps(ViewKind view);
-// Is the view drawn through the scene's camera (Camera, Texels), so that its picture keeps the camera's aspect?
-bool looks_through_scene_camera(ViewKind view);
-
-// Which aliasing the Error view paints: Lloyd's m, or one of its two factors (ShadowError).
-enum class AliasingShown { total, perspective, projection };
-
-// What the Error view paints: each pixel's verdict against the reference (false shadow, false light,
-// Lloyd's m beneath), or its signed visibility error, method − reference (ShadowError::visibility);
-// automatic: the signed error where shadows are soft, the verdicts where they are hard.
-enum class ErrorShown { automatic, verdicts, signed_visibility };
-// Are shadows soft, so that a verdict (shadowed or lit) no longer says how far a pixel is off? The
-// light has a size (the reference is soft) or the filter is not hard (the method's visibility is
-// fractional).
-bool soft_shadows(const Inspection& inspection);
-// The Error view's choice resolved: does it paint the signed visibility error?
-bool shows_signed_error(const Inspection& inspection, ErrorShown shown);
-
-// What the Shadow map view paints per texel: the stored depth, or, for a filter that reads moments
-// (vsm, evsm), the blurred moments' mean or standard deviation √(m₂ − m₁²) (lookup/moment_map.hpp).
-enum class TextureShown { depth, moment_mean, moment_deviation };
-
-// How the World, Light space and PPLS views are looked at: a free perspective orbit, or
-// orthographic along the light (what the map sees) or from the side (in the plane of the light and
-// the view direction, where a warp shows).
-enum class SpacePreset { orbit, from_light, side };
-const char* to_string(SpacePreset preset);                               // "orbit", "light", "side"
-std::optional<SpacePreset> space_preset_named(const std::string& name);  // nullopt for an unknown name
-const std::vector<SpacePreset>& all_space_presets();
-
-struct ViewOptions {
-    std::string step;                         // the trace step to highlight; empty: the method's last step
-    SpacePreset preset = SpacePreset::orbit;  // World, Light space, PPLS: how the camera looks
-    bool scene_in_ppls = true;              // PPLS: draw the scene's triangles (clipped to the unit cube and a margin)
-    bool lit_mask = false;                  // camera view: white where lit, black where shadowed, unlit colours
-    MapOverlay overlay = MapOverlay::none;  // camera view of a map method: each fragment's map or texels per pixel
-    int width = 0, height = 0;              // error view: the camera image it measures (0: 640 x 640 / aspect)
-    AliasingShown aliasing = AliasingShown::total;  // error view: the heat map's quantity
-    ErrorShown error = ErrorShown::automatic;       // error view: verdicts or signed visibility error
-    TextureShown texture = TextureShown::depth;     // shadow map view: depth or the moments VSM reads
+// Which of the ViewOptions a view reads: the window's panel shows these choosers beside it, and
+// the window redraws it when the Controls panel's "shadow only" flips.
+struct ViewChoosers {
+    bool error = false;          // verdicts or the signed visibility error (ErrorShown)
+    bool aliasing = false;       // m or one of its factors (AliasingShown)
+    bool texture = false;        // depth or the moments a vsm or evsm filter reads (TextureShown)
+    bool overlay = false;        // shadows alone, the map per pixel or texels per pixel (MapOverlay)
+    bool preset = false;         // orbit, from the light, side (SpacePreset)
+    bool scene_in_ppls = false;  // the scene's triangles drawn in post-perspective light space
+    bool shadow_only = false;    // the Controls panel's: white where lit, black where shadowed (lit_mask)
 };
 
-// What a view could not draw, for the window's status line: "12 triangles behind w = 0 left out".
-struct ViewReport {
-    std::vector<std::string> notes;
+// What a drag in the window's panel does.
+enum class ViewDrag {
+    pans_image,           // pans and zooms a flat picture
+    orbits,               // orbits the view's camera; the next redraw places the view's own again
+    orbits_kept,          // orbits it, kept across redraws until the view or its preset changes
+    steers_scene_camera,  // moves the scene's camera (the method computes again); unlocked, the scene
+                          // camera's aspect follows the first panel that steers it
 };
 
-// Fills an empty renderer with the view and places its camera. The camera view installs a
-// ShadowMapPass on the renderer (a StencilVolumePass for a geometric technique). Throws
-// std::invalid_argument for a step id the trace lacks.
-ViewReport build_view(vtkRenderer* renderer, const Inspection& inspection, ViewKind view, const ViewOptions& options);
+struct ViewInteraction {
+    bool draws_steps = false;           // draws the trace step chosen: redrawn when another is chosen
+    bool through_scene_camera = false;  // drawn through the scene's camera, keeping its aspect
+                                        // (letterboxed in a panel; `render` draws the camera's image size)
+    ViewDrag drag = ViewDrag::orbits;
+    bool handles = false;  // the light and the camera as handles the user drags to move them
+};
 
-// Computes now the inspection's lazy parts that build_view would read for this view (the depth maps,
-// a reference, an error against it), so that a worker thread pays for them and drawing only draws.
-void prepare_view(const Inspection& inspection, ViewKind view, const ViewOptions& options);
+// Computes the inspection's lazy parts the view will read (the depth maps, a reference, an error
+// against it), on the window's worker thread, so that drawing only draws.
+using PrepareView = std::function<void(const Inspection& inspection, const ViewOptions& options)>;
+// Fills an empty renderer with the view and places its camera.
+using BuildView =
+    std::function<ViewReport(vtkRenderer* renderer, const Inspection& inspection, const ViewOptions& options)>;
+
+struct View {
+    std::string name;     // as on the command line: "shadowmap"
+    std::string title;    // as in the window: "Shadow map"
+    PrepareView prepare;  // empty: the view reads nothing lazy (the Camera view draws on the GPU)
+    BuildView build;
+    ViewChoosers choosers;
+    ViewInteraction interaction;
+};
+inline bool operator==(const View& a, const View& b) { return a.name == b.name; }
+
+// Every view, in the order the window's choosers list them: the shipped ones, then any registered
+// later. A deque: registering one more never moves the others, so pointers to entries stay valid.
+const std::deque<View>& all_views();
+const View* find_view(const std::string& name);  // nullptr when no view has that name
+// The view, or std::invalid_argument "unknown view 'x' (known: camera, world, ...)".
+const View& view_or_throw(const std::string& name);
+std::string view_names(const std::string& separator = ", ");
+// Adds a view after the others (a test's throw-away view, a plug-in), before the window is built:
+// its panels list the views there are when it opens. Throws std::invalid_argument when the name is
+// taken or the view cannot draw (no build).
+void register_view(View view);
+
+// The view built into an empty renderer. The camera view installs a ShadowMapPass on the renderer
+// (a StencilVolumePass for a geometric technique). Throws std::invalid_argument for a step id the
+// trace lacks.
+ViewReport build_view(vtkRenderer* renderer, const Inspection& inspection, const View& view,
+                      const ViewOptions& options);
+// The view's prepare step, if it has one.
+void prepare_view(const Inspection& inspection, const View& view, const ViewOptions& options);
 
 }  // namespace shadowlab

@@ -1,5 +1,5 @@
 #pragma once
-// One builder per view (views/*_view.cpp), dispatched by build_view.
+// One descriptor per view (views/*_view.cpp, listed in view_registry.cpp), and what they share.
 #include <array>
 #include <vector>
 #include <glm/glm.hpp>
@@ -15,12 +15,14 @@ class vtkTextProperty;
 
 namespace shadowlab {
 
-ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
-ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, ViewKind view, const ViewOptions& options);
-ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
-ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in);
-ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options);
-ViewReport build_stencil_view(vtkRenderer* renderer, const Inspection& in);
+View camera_view();
+View world_view();        // space_view.cpp
+View light_space_view();  // space_view.cpp
+View ppls_view();         // space_view.cpp
+View shadow_map_view();
+View texels_view();
+View error_view();
+View stencil_view();
 
 // The camera image the Error view judges (a technique's own; for a map, options.width x height).
 glm::ivec2 judged_image_size(const Inspection& in, const ViewOptions& options);

@@ -93,7 +93,7 @@ TEST_F(TwoMapsByViewDepth, GpuBlendsAsTheCpuDoes) {
         }
         ViewOptions options;
         options.lit_mask = true;
-        const RgbImage gpu = render_view(in, ViewKind::camera, options, kWidth, kHeight);
+        const RgbImage gpu = render_view(in, view_or_throw("camera"), options, kWidth, kHeight);
         const Agreement all = agreement(gpu, cpu, ref), band = agreement(gpu, decided_by_band, ref);
         ASSERT_EQ(all.undrawn, 0u);
         ASSERT_GT(all.compared, kWidth * kHeight / 4u);
@@ -116,7 +116,7 @@ TEST_F(TwoMapsByViewDepth, CascadeOverlayPaintsEachSplitInItsMapsColour) {
     const Inspection in = inspect(scene, "near_then_far_hard", 1024);
     ViewOptions options;
     options.overlay = MapOverlay::cascade_index;
-    const RgbImage image = render_view(in, ViewKind::camera, options, kWidth, kHeight);
+    const RgbImage image = render_view(in, view_or_throw("camera"), options, kWidth, kHeight);
     const ReferenceImage& ref = in.reference(kWidth, kHeight);
     const MapSelection& s = in.setup.selection;
     const double split = s.split_depths[1], margin = 0.05 * split;

@@ -47,7 +47,8 @@ RgbImage gpu_visibility(const Inspection& in) {
     window->SetSize(kWidth, kHeight);
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
-    build_view(renderer, in, ViewKind::camera, ViewOptions{.lit_mask = true, .width = kWidth, .height = kHeight});
+    build_view(renderer, in, view_or_throw("camera"),
+               ViewOptions{.lit_mask = true, .width = kWidth, .height = kHeight});
     ShadowMapPass::SafeDownCast(renderer->GetPass())->SetOutput(ShadowMapPass::Output::visibility);
     window->Render();
     RgbImage image = grab(window);

@@ -48,7 +48,7 @@ class CameraViewOfEachMethod : public ::testing::TestWithParam<std::string> {};
 TEST_P(CameraViewOfEachMethod, GroundUnderTheBoxIsDarkerThanGroundFarFromIt) {
     const Scene scene = floating_box(kWidth, kHeight);
     const Inspection in = inspect(scene, GetParam(), 1024);
-    const RgbImage image = render_view(in, ViewKind::camera, {}, kWidth, kHeight);
+    const RgbImage image = render_view(in, view_or_throw("camera"), {}, kWidth, kHeight);
     ASSERT_EQ(image.width, kWidth);
     const double under = brightness(image, pixel_of(scene.camera, {0.0, 0.0, 0.0}, kWidth, kHeight));
     const double away = brightness(image, pixel_of(scene.camera, {6.0, 0.0, -3.0}, kWidth, kHeight));

@@ -27,7 +27,7 @@ Inspection inspect(const Scene& scene, const std::string& technique, const std::
 RgbImage lit_mask(const Inspection& in) {
     ViewOptions options;
     options.lit_mask = true;
-    return render_view(in, ViewKind::camera, options, kWidth, kHeight);
+    return render_view(in, view_or_throw("camera"), options, kWidth, kHeight);
 }
 
 // The GPU lit mask against the CPU technique's `shadowed`, away from shadow edges.
@@ -55,7 +55,8 @@ Scene shipped(const std::string& name) {
 
 TEST(StencilPass, ZFailDarkensTheGroundUnderTheBox) {
     const Scene scene = floating_box(kWidth, kHeight);
-    const RgbImage image = render_view(inspect(scene, "volumes", "zfail"), ViewKind::camera, {}, kWidth, kHeight);
+    const RgbImage image =
+        render_view(inspect(scene, "volumes", "zfail"), view_or_throw("camera"), {}, kWidth, kHeight);
     const double under = brightness(image, pixel_of(scene.camera, {0.0, 0.0, 0.0}, kWidth, kHeight));
     const double away = brightness(image, pixel_of(scene.camera, {6.0, 0.0, -3.0}, kWidth, kHeight));
     EXPECT_GT(away, 80.0) << "the lit ground should be drawn";
