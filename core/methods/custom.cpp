@@ -4,9 +4,9 @@
 // apply to them as to ShadowLab's own.
 #include "methods/custom.hpp"
 
-#include "io/engine_conventions.hpp"
 #include "io/matrix_import.hpp"
 #include "maps/clip_conventions.hpp"
+#include "methods/engine_conventions.hpp"
 #include "methods/focused.hpp"
 #include "methods/light_fit.hpp"
 #include "methods/map_coverage.hpp"
@@ -62,7 +62,8 @@ void record_conversion(const ShadowInputs& in, const Settings& s, const EngineMa
                          .value("v_direction", s.choice("v_direction"))
                          .value("uvz_from_clip", uvz_from_clip);
         for (size_t k = 0; k < setup.maps.size(); ++k) {
-            const std::string suffix = setup.maps.size() > 1 ? " " + std::to_string(k) : "";
+            // Appended, not prefixed: GCC 12 warns falsely of overlap (-Wrestrict) in `" " + std::string`.
+            const std::string suffix = setup.maps.size() > 1 ? std::string(" ").append(std::to_string(k)) : "";
             step.value("clip_from_world" + suffix, engine.clip_from_world[k])
                 .value("world_to_uvz" + suffix, setup.maps[k].world_to_uvz)
                 .map_shape(int(k), "map" + suffix, map_volume(setup.maps[k]), Role::map);

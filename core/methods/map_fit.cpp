@@ -82,7 +82,8 @@ void record_output(const ShadowSetup& setup, const std::vector<glm::dvec3>& cove
     record(trace, [&](Trace& t) {
         for (size_t i = 0; i < setup.maps.size(); ++i) {
             const ShadowMap& map = setup.maps[i];
-            const std::string suffix = setup.maps.size() > 1 ? "-" + std::to_string(i) : "";
+            // Appended, not prefixed: GCC 12 warns falsely of overlap (-Wrestrict) in `"-" + std::string`.
+            const std::string suffix = setup.maps.size() > 1 ? std::string("-").append(std::to_string(i)) : "";
             Step& output = t.add("output" + suffix, "Map transform",
                                  "world (x,y,z,1) -> (u,v,d,w); u,v,d in [0,1] after / w", Space::world)
                                .value("world_to_uvz", map.world_to_uvz)

@@ -73,7 +73,8 @@ private:
 // The child's answer: 'N' and the nodes, or 'U' (Assimp read nothing) or 'P' (what it read is
 // unusable) and the reason.
 std::string answer(const AssimpRead& read) {
-    if (read.refusal.empty()) return "N" + encode_node_meshes(read.nodes);
+    // Appended, not prefixed: GCC 12 warns falsely of overlap (-Wrestrict) in `"N" + std::string`.
+    if (read.refusal.empty()) return std::string("N").append(encode_node_meshes(read.nodes));
     return (read.unreadable ? "U" : "P") + read.refusal;
 }
 

@@ -29,7 +29,7 @@
 #include "gui/scene_panel.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
-#include "io/camera_import.hpp"
+#include "exchange/camera_import.hpp"
 #include "model/camera_in_shadow.hpp"
 #include "render/opengl_renderer.hpp"
 #include "render/rgb_image.hpp"
