@@ -6,7 +6,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "io/inspection_json.hpp"
+#include "exchange/inspection_json.hpp"
 #include "io/value_text.hpp"
 #include "math/matrix.hpp"
 #include "measure_command.hpp"

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "io/inspection_json.hpp"
+#include "exchange/inspection_json.hpp"
 #include "limits.hpp"
 #include "scene/image_size.hpp"
 #include "metrics/measurement.hpp"

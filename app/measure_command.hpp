@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "io/inspection_json.hpp"
+#include "exchange/inspection_json.hpp"
 #include "metrics/measurement.hpp"
 #include "plot/chart_png.hpp"
 #include "scene_source.hpp"

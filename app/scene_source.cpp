@@ -1,6 +1,6 @@
 #include "scene_source.hpp"
 
-#include "io/camera_import.hpp"
+#include "exchange/camera_import.hpp"
 
 namespace shadowlab {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The scene a command works on: which of its file's cameras and lights, and the engine camera that
-// may replace the file's (`--camera-matrices`, core/io/camera_import.hpp).
+// may replace the file's (`--camera-matrices`, core/exchange/camera_import.hpp).
 #include <map>
 #include <string>
 

@@ -9,7 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "io/camera_import.hpp"
+#include "exchange/camera_import.hpp"
 #include "io/matrix_import.hpp"
 #include "math/matrix.hpp"
 #include "metrics/measurement.hpp"

@@ -2,8 +2,8 @@
 #include <regex>
 #include <gtest/gtest.h>
 
-#include "io/inspection_json.hpp"
-#include "io/matrix_export.hpp"
+#include "exchange/inspection_json.hpp"
+#include "exchange/matrix_export.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 

@@ -1,13 +1,14 @@
 #pragma once
 // An engine's light view-projection matrices, read as the engine writes them: GLSL `mat4(...)`,
-// HLSL `float4x4 ... = {...}` or JSON. The reverse of matrix_export; maps/clip_conventions.hpp turns
-// them into ShadowLab's world_to_uvz.
+// HLSL `float4x4 ... = {...}` or JSON. The reverse of exchange/matrix_export.hpp;
+// maps/clip_conventions.hpp turns them into ShadowLab's world_to_uvz.
 //
 // The JSON schema:
 //   {"matrices": [M, ...],               one or more, each 16 numbers or 4 arrays of 4
 //    "tiles": [[u0, v0, u1, v1], ...],   one per matrix: its tile in the engine's texture (needed for several)
 //    "split_depths": [d0, ..., dn],      optional, matrices + 1 increasing view depths: cascades
-//    "camera": {...}}                    passed over: the engine's camera (camera_import.hpp) may share the file
+//    "camera": {...}}                    passed over: the engine's camera may share the file
+//                                        (exchange/camera_import.hpp)
 #include <string>
 #include <vector>
 #include <glm/glm.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // 4x4 matrices as an engine writes them, in shader text (GLSL `mat4(...)`, HLSL `float4x4 ... = {...}`)
 // or JSON: the reading shared by a light's matrices (matrix_import.hpp) and a camera's
-// (camera_import.hpp). Every refusal is a std::invalid_argument on one line: the file, where in it
+// (exchange/camera_import.hpp). Every refusal is a std::invalid_argument on one line: the file, where in it
 // (a matrix, a JSON field) and what is wrong.
 #include <string>
 #include <vector>

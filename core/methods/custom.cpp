@@ -4,7 +4,7 @@
 // apply to them as to ShadowLab's own.
 #include "methods/custom.hpp"
 
-#include "io/engine_conventions.hpp"
+#include "methods/engine_conventions.hpp"
 #include "io/matrix_import.hpp"
 #include "maps/clip_conventions.hpp"
 #include "methods/focused.hpp"

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene_error.hpp"
-#include "scene/scene_loader.hpp"
+#include "scene/scene_validation.hpp"
 
 namespace shadowlab {
 namespace {

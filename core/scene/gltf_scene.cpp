@@ -25,7 +25,7 @@
 #include "math/normalize.hpp"
 #include "scene/mesh_scene.hpp"
 #include "scene/scene_error.hpp"
-#include "scene/scene_loader.hpp"
+#include "scene/scene_validation.hpp"
 #include "scene/triangle_mesh.hpp"
 
 namespace shadowlab {

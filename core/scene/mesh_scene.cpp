@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <assimp/Importer.hpp>
 
-#include "scene/scene_loader.hpp"
+#include "scene/scene_validation.hpp"
 #include "scene/triangle_mesh.hpp"
 
 namespace shadowlab {

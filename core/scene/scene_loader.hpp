@@ -7,6 +7,7 @@
 #include "scene/gltf_reference.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_choice.hpp"
+#include "scene/scene_validation.hpp"  // validate_scene: the same rules for an in-memory scene
 
 namespace shadowlab {
 
@@ -21,7 +22,5 @@ Scene parse_scene(const std::string& json_text, const std::string& file);
 // scene JSON references (its choice and roles); nullopt for a scene JSON of its own or a lone mesh.
 // Throws as load_scene does on a malformed file.
 std::optional<GltfReference> gltf_reference_of(const std::string& path, const SceneChoice& choice = {});
-// Checks an in-memory scene (e.g. built in code or edited in the GUI) by the same rules.
-void validate_scene(const Scene& scene);
 
 }  // namespace shadowlab

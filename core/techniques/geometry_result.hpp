@@ -9,7 +9,6 @@
 
 #include "geometry/homogeneous_clip.hpp"
 #include "notes/note.hpp"
-#include "volumes/stencil_count.hpp"
 
 namespace shadowlab {
 
@@ -28,6 +27,14 @@ enum class StencilRule {
     zpass,  // volume faces in front of the visible point: front +1, back -1 (Heidmann)
     zfail,  // volume faces behind it: back +1, front -1 (Everitt and Kilgard 2002, Carmack's reverse)
     cover   // flattened casters on the receiving plane: 1 where drawn (Blinn, planar projection)
+};
+
+// A shadow volume's stencil pass on the CPU, both counts per pixel (volumes/stencil_count.hpp counts them).
+struct StencilCounts {
+    // Per pixel, row-major like the image. Where nothing is visible the counts are 0.
+    std::vector<int> zpass;      // front-facing faces in front of the visible point, minus back-facing ones
+    std::vector<int> zfail;      // back-facing faces behind it (to infinity), minus front-facing ones
+    std::vector<int> fragments;  // faces the rule draws that the near plane leaves: quads, and caps for z-fail
 };
 
 struct GeometryResult {

@@ -7,18 +7,12 @@
 
 #include "reference/exact_shadows.hpp"
 #include "scene/camera.hpp"
+#include "techniques/geometry_result.hpp"
 #include "volumes/shadow_volume.hpp"
 
 namespace shadowlab {
 
 enum class CountRule { zpass, zfail };
-
-struct StencilCounts {
-    // Per pixel, row-major like the image. Where nothing is visible the counts are 0.
-    std::vector<int> zpass;      // front-facing faces in front of the visible point, minus back-facing ones
-    std::vector<int> zfail;      // back-facing faces behind it (to infinity), minus front-facing ones
-    std::vector<int> fragments;  // faces the rule draws that the near plane leaves: quads, and caps for z-fail
-};
 
 // Both counts for every visible pixel of `image` (whose size gives the pixels), as a GPU's stencil
 // pass gets them: each volume polygon rasterized in homogeneous coordinates (raster/polygon_spans.hpp,

@@ -46,7 +46,7 @@
 #include "plot/shimmer_chart.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
-#include "io/inspection_json.hpp"
+#include "exchange/inspection_json.hpp"
 #include "maps/clip_conventions.hpp"
 #include "math/matrix.hpp"
 

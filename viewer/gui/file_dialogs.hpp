@@ -2,7 +2,7 @@
 // The window's file dialogs, each asking for one path: empty when the user cancels.
 #include <QString>
 
-#include "io/matrix_export.hpp"
+#include "exchange/matrix_export.hpp"
 
 class QWidget;
 

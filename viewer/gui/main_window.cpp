@@ -27,7 +27,7 @@
 #include "gui/scene_panel.hpp"
 #include "gui/step_player.hpp"
 #include "gui/view_panel.hpp"
-#include "io/camera_import.hpp"
+#include "exchange/camera_import.hpp"
 #include "render/opengl_renderer.hpp"
 #include "render/rgb_image.hpp"
 

@@ -14,7 +14,7 @@
 #include <QTemporaryDir>
 
 #include "gui/background_inspection.hpp"
-#include "io/matrix_export.hpp"
+#include "exchange/matrix_export.hpp"
 #include "model/session.hpp"
 
 class QAction;
@@ -50,7 +50,7 @@ public:
     // The same from the clipboard's text (File ▸ Paste light matrices), kept in a file of the
     // window's own for as long as it runs.
     void paste_light_matrices();
-    // An engine's camera (view and projection matrices: core/io/camera_import.hpp) replaces the
+    // An engine's camera (view and projection matrices: core/exchange/camera_import.hpp) replaces the
     // scene's, read under `conventions` (key=value: clip_depth, reversed_z, clip_y, looks_along, storage).
     void import_camera_matrices(const QString& file, const std::map<std::string, std::string>& conventions);
     // The scene as a JSON referencing its glTF file, with the camera, light and roles chosen.

@@ -5,15 +5,15 @@
 // P(2,3) = -2 f n / (f - n), P(3,2) = -1 (row, column); or glm::ortho's, for a projection whose last
 // row is (0, 0, 0, 1): P(1,1) = 1 / half height, P(0,0) = P(1,1) / aspect, P(2,2) = -2 / (f - n),
 // P(2,3) = -(f + n) / (f - n).
-#include "io/camera_import.hpp"
+#include "exchange/camera_import.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "io/engine_conventions.hpp"
 #include "limits.hpp"
 #include "math/matrix.hpp"
+#include "methods/engine_conventions.hpp"
 
 namespace shadowlab {
 namespace {

@@ -1,8 +1,8 @@
-#include "io/matrix_export.hpp"
+#include "exchange/matrix_export.hpp"
 
 #include <cstdio>
 
-#include "io/inspection_json.hpp"
+#include "exchange/inspection_json.hpp"
 
 namespace shadowlab {
 namespace {

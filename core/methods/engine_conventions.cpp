@@ -1,4 +1,4 @@
-#include "io/engine_conventions.hpp"
+#include "methods/engine_conventions.hpp"
 
 namespace shadowlab {
 

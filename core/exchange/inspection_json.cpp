@@ -1,4 +1,4 @@
-#include "io/inspection_json.hpp"
+#include "exchange/inspection_json.hpp"
 
 #include "math/matrix.hpp"
 

@@ -1,11 +1,11 @@
 #pragma once
 // An engine's camera, read as the engine writes it: its view matrix (world -> eye) and its
 // projection (eye -> clip), turned into the scene's Camera. The light's matrices are read the same
-// way (matrix_import.hpp, io/matrix_text.hpp), and one file may hold both.
+// way (io/matrix_import.hpp, io/matrix_text.hpp), and one file may hold both.
 //
 // The file:
 //   JSON   {"camera": {"view": V, "projection": P},
-//           "matrices": [...], ...}          the light's keys may stand beside (matrix_import.hpp)
+//           "matrices": [...], ...}          the light's keys may stand beside (io/matrix_import.hpp)
 //          V and P as the light's matrices: 4 rows of 4, or 16 numbers with their storage named.
 //   GLSL   uniform mat4 view = mat4(...);        mat4 projection = mat4(...);       (by columns)
 //   HLSL   float4x4 view = {...};                float4x4 projection = {...};       (by rows)
