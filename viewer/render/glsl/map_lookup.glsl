@@ -4,7 +4,6 @@ uniform int shadowMapCount;
 uniform int shadowMapCubeFace[shadowMaxMaps];
 uniform vec4 shadowMapViewport[shadowMaxMaps];    // (u0, v0, u1, v1): the tile in the texture
 uniform vec4 shadowMapTileTexels[shadowMaxMaps];  // first and last texel (x, y, x, y) of the tile
-uniform float shadowMapZBiasScale[shadowMaxMaps];
 uniform int shadowSelectionRule;
 uniform vec3 shadowSelectionEye;
 uniform vec3 shadowSelectionViewAxis;
