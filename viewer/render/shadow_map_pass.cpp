@@ -153,6 +153,29 @@ bool set_overlay_uniforms(ProgramUniforms& program, const std::vector<glm::vec3>
                    program.SetUniformi("shadowRampCount", static_cast<int>(ramp.size())));
 }
 
+// Whether the filter's taps turn per pixel (pcf's Poisson disk, pcss).
+bool turns_taps(const ShadowFilter& f) {
+    const FilterDescriptor& filter = filter_of(f);
+    return filter.turns_taps && filter.turns_taps(f);
+}
+
+// Every filter's GLSL (a shipped filter's file, render/glsl/<name>_filter.glsl, or a registered
+// one's own text), then map_visibility, one map's share of the light at the receiver (off the map,
+// lit), by the filter whose index is shadowFilterKind.
+std::string filters_glsl() {
+    std::string functions, dispatch;
+    for (const FilterDescriptor& f : all_filters()) {
+        functions += f.glsl.empty() ? std::string(glsl_source(f.name + "_filter")) : f.glsl;
+        dispatch += "  if (shadowFilterKind == " + std::to_string(filter_index(f)) + ") return shadowFilter_" + f.name +
+                    "(i, m, rotation);\n";
+    }
+    return functions +
+           "float shadowMapVisibility(int i, vec3 position, vec3 normal, float rotation) {\n"
+           "  ShadowMapReceiver m;\n"
+           "  if (!shadowUnder(i, position, normal, m)) return 1.0;\n" +
+           dispatch + "  return 1.0;\n}\n";
+}
+
 // The taps the filter reads around the lookup (filter_taps, the CPU's own list and order), as the
 // shaders hold them: (offset, weight).
 std::vector<glm::vec3> packed_taps(const ShadowFilter& f) {
@@ -175,7 +198,7 @@ bool set_filter_uniforms(ProgramUniforms& program, const ShadowLookup& lookup, c
     };
     return all_set(program.SetUniformi("shadowTapCount", tap_count),
                    program.SetUniform3fv("shadowTaps", ShadowMapPass::kMaxTaps, glm::value_ptr(taps[0])),
-                   program.SetUniformi("shadowTapsTurn", f.kind == FilterKind::pcf && f.kernel == PcfKernel::poisson),
+                   program.SetUniformi("shadowTapsTurn", turns_taps(f)),
                    real("shadowFilterRadiusTexels", f.radius_texels), real("shadowFilterRadiusWorld", f.radius_world),
                    program.SetUniformi("shadowFilterKernelSize", f.kernel_size),
                    real("shadowMinVariance", f.min_variance), real("shadowBleedReduction", f.bleed_reduction),
@@ -202,7 +225,7 @@ std::string glsl_int_constant(const char* name, Value value) {
 }
 
 // The constants the shaders share with C++, written from it so that neither side can drift: the
-// arrays' sizes, the values of Projection, MapSelection::Rule, FilterKind and MapOverlay, the
+// arrays' sizes, the values of Projection, MapSelection::Rule and MapOverlay, the
 // overlay's strength and range, and PCSS's search limit.
 std::string glsl_constants() {
     const auto constant = [](const char* name, auto value) { return glsl_int_constant(name, value); };
@@ -211,8 +234,7 @@ std::string glsl_constants() {
     };
     using Rule = MapSelection::Rule;
     return constant("shadowMaxMaps", kMaxMaps) + constant("shadowMaxRampStops", ShadowMapPass::kMaxRampStops) +
-           constant("shadowMaxTaps", ShadowMapPass::kMaxTaps) + constant("shadowFilterVsm", FilterKind::vsm) +
-           constant("shadowFilterEvsm", FilterKind::evsm) + constant("shadowFilterPcss", FilterKind::pcss) +
+           constant("shadowMaxTaps", ShadowMapPass::kMaxTaps) +
            real("shadowMaxSearchTexels", ShadowReader::kMaxSearchTexels) +
            constant("shadowParaboloid", Projection::paraboloid) + constant("shadowRuleOnly", Rule::only) +
            constant("shadowRuleViewDepth", Rule::view_depth) + constant("shadowRuleTileBounds", Rule::tile_bounds) +
@@ -232,29 +254,30 @@ std::string glsl_constants() {
 // GUI thread the first time it is drawn, and under llvmpipe, before Mesa's shader cache on disk
 // holds it, this one takes 0.14 s, the general one 1.6 s and one specialized for PCSS 0.9 s: each
 // specialization more would be one pause more for a user trying the filters.
+constexpr int kDefaultFilter = 0;  // the first filter, the filter setting's default (hard)
+
 struct Stage2Switches {
-    FilterKind filter;
+    int filter;  // the filter's index (filter_index), which shadowMapVisibility dispatches on
     bool receiver_plane;
     MapOverlay overlay;
 
-    bool compiled_in() const { return filter == FilterKind::hard && !receiver_plane && overlay == MapOverlay::none; }
+    bool compiled_in() const { return filter == kDefaultFilter && !receiver_plane && overlay == MapOverlay::none; }
     std::string declarations() const {
         const auto declared = [this](const char* name, int value) {
             return compiled_in() ? glsl_int_constant(name, value) : "uniform int " + std::string(name) + ";\n";
         };
-        return declared("shadowFilterKind", static_cast<int>(filter)) +
-               declared("shadowBiasReceiverPlane", receiver_plane) +
+        return declared("shadowFilterKind", filter) + declared("shadowBiasReceiverPlane", receiver_plane) +
                declared("shadowOverlay", static_cast<int>(overlay));
     }
     bool set(ProgramUniforms& program) const {
-        return compiled_in() || all_set(program.SetUniformi("shadowFilterKind", static_cast<int>(filter)),
+        return compiled_in() || all_set(program.SetUniformi("shadowFilterKind", filter),
                                         program.SetUniformi("shadowBiasReceiverPlane", receiver_plane),
                                         program.SetUniformi("shadowOverlay", static_cast<int>(overlay)));
     }
 };
 
 Stage2Switches stage2_switches(const ShadowLookup& lookup, ShadowMapPass::Output output, MapOverlay overlay) {
-    return {.filter = lookup.filter.kind,
+    return {.filter = filter_index(filter_of(lookup.filter)),
             .receiver_plane = lookup.bias.receiver_plane,
             .overlay = output == ShadowMapPass::Output::shaded ? overlay : MapOverlay::none};
 }
@@ -442,12 +465,12 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
         return true;
     }
     pass_world_position(vertex);
-    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec",
-                                 "//VTK::Light::Dec\n" + projection +
-                                     stage2_switches(lookup_, output_, overlay_).declarations() +
-                                     glsl("map_lookup", "depth_bias", "hash", "kernel_taps", "shadow_reader", "pcss",
-                                          "chebyshev", "moment_map", "shadow_filter", "map_overlay"),
-                                 false);
+    vtkShaderProgram::Substitute(
+        fragment, "//VTK::Light::Dec",
+        "//VTK::Light::Dec\n" + projection + stage2_switches(lookup_, output_, overlay_).declarations() +
+            glsl("map_lookup", "depth_bias", "hash", "kernel_taps", "shadow_reader", "chebyshev", "moment_map") +
+            filters_glsl() + glsl("map_overlay"),
+        false);
     declare_surface_shading(fragment);  // before the lookup's declarations, which use it
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", glsl("shadow_lookup"), false);
     return true;

@@ -94,7 +94,7 @@ std::string map_name(const ShadowSetup& setup, size_t i) {
 }
 
 bool soft_shadows(const Inspection& in) {
-    return in.scene.light.is_area() || (in.has_map() && in.lookup.filter.kind != FilterKind::hard);
+    return in.scene.light.is_area() || (in.has_map() && in.lookup.filter.soft());
 }
 
 bool shows_signed_error(const Inspection& in, ErrorShown shown) {

@@ -1,5 +1,5 @@
-// Percentage-closer soft shadows: the light's size, penumbra_width (lookup/pcss.cpp) and
-// ShadowReader::soft_shadow.
+// Percentage-closer soft shadows (lookup/pcss_filter.cpp): the light's size, penumbra_width
+// (lookup/pcss.cpp) and soft_shadow, over the Poisson disk turned per pixel.
 uniform int shadowLightDirectional;
 uniform vec3 shadowLightPosition;
 uniform float shadowLightRadius;
@@ -38,3 +38,4 @@ float shadowSoftShadow(int i, ShadowMapReceiver m, float rotation) {
   float radius = shadowInTexels(shadowPenumbraWidth(m.position, blockerDistance) / 2.0, m.texelWorld);
   return shadowLitShare(i, m, min(radius, search), rotation);
 }
+float shadowFilter_pcss(int i, ShadowMapReceiver m, float rotation) { return shadowSoftShadow(i, m, rotation); }
