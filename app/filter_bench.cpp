@@ -41,7 +41,7 @@ double cost_ms(const Measurement& m) { return m.prefilter_ms + m.lookup_ms; }
 // two passes, the filter skipped where the search finds no blocker).
 std::string point_label(const Measurement& m, int kernel_size) {
     if (m.lookup.filter.reads_moments()) return std::to_string(kernel_size) + "² blur";
-    if (m.lookup.filter.kind == FilterKind::hard) return "";
+    if (!m.lookup.filter.soft()) return "";
     return std::to_string(int(m.taps_per_pixel + 0.5)) + " taps";
 }
 

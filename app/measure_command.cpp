@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 #include <stdexcept>
+#include <variant>
 
 #include "exchange/inspection_json.hpp"
 #include "limits.hpp"
@@ -36,23 +37,14 @@ Json to_json(const VisibilityError& v) {
             {"light_bleeding", v.light_bleeding}};
 }
 
-// The filter and the bias the lookups applied.
+// The filter and the bias the lookups applied: the filter's name, its texel reads and the settings
+// it reads (its descriptor's), as given.
 Json to_json(const ShadowLookup& l) {
     const ShadowFilter& f = l.filter;
-    Json filter = {{"kind", to_string(f.kind)}, {"taps", f.taps()}};
-    if (f.kind == FilterKind::pcf) {
-        filter["kernel"] = to_string(f.kernel);
-        filter["kernel_size"] = f.kernel_size;
-        filter["radius"] =
-            f.radius_world > 0.0 ? Json({{"world", f.radius_world}}) : Json({{"texels", f.radius_texels}});
-    }
-    if (f.kind == FilterKind::pcss) filter["kernel_size"] = f.kernel_size;
-    if (f.reads_moments()) {
-        filter["kernel_size"] = f.kernel_size;
-        filter["min_variance"] = f.min_variance;
-        filter["bleed_reduction"] = f.bleed_reduction;
-    }
-    if (f.kind == FilterKind::evsm) filter["exponents"] = {f.evsm_positive, f.evsm_negative};
+    Json filter = {{"kind", f.kind}, {"taps", f.taps()}};
+    for (const SettingSpec& spec : filter_of(f).settings)
+        if (const auto value = f.settings.values().find(spec.name); value != f.settings.values().end())
+            filter[spec.name] = std::visit([](const auto& v) { return Json(v); }, value->second);
     return {{"filter", filter},
             {"bias",
              {{"constant", l.bias.constant},
@@ -147,8 +139,8 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
     if (v.penumbra_width_ratio) std::cout << ", penumbra width x" << *v.penumbra_width_ratio;
     std::cout << "\n";
     if (!m.geometry)
-        std::cout << "  lookup: filter " << to_string(m.lookup.filter.kind) << ", " << m.taps_per_pixel
-                  << " taps per pixel, " << m.lookup_ms << " ms for " << e.receiver_pixels << " pixels"
+        std::cout << "  lookup: filter " << m.lookup.filter.kind << ", " << m.taps_per_pixel << " taps per pixel, "
+                  << m.lookup_ms << " ms for " << e.receiver_pixels << " pixels"
                   << (m.prefilter_ms > 0.0 ? ", moments blurred in " + std::to_string(m.prefilter_ms) + " ms" : "")
                   << "\n";
     if (m.texels_used > 0.0)

@@ -232,7 +232,7 @@ TEST(MomentMap, TheBlurStaysInsideEachTile) {
     DepthMap depth{16, std::vector<float>(256, 0.25f)};
     for (int y = 0; y < 16; ++y)
         for (int x = 8; x < 16; ++x) depth.depth[size_t(y) * 16 + x] = 0.75f;
-    const MomentMap moments = blurred_moments(depth, setup, {.kind = FilterKind::vsm, .kernel_size = 5});
+    const MomentMap moments = blurred_moments(depth, setup, {.kind = "vsm", .kernel_size = 5});
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x) {
             const float d = x < 8 ? 0.25f : 0.75f;
@@ -253,7 +253,7 @@ TEST(MomentMap, TheBlurIsTheClampedBoxAverage) {
     DepthMap depth{16, std::vector<float>(256)};
     for (float& d : depth.depth) d = depth01(random);
     for (int side : {1, 2, 3, 4}) {
-        const MomentMap moments = blurred_moments(depth, setup, {.kind = FilterKind::vsm, .kernel_size = side});
+        const MomentMap moments = blurred_moments(depth, setup, {.kind = "vsm", .kernel_size = side});
         const int before = side / 2, after = side - 1 - before;
         for (int y = 0; y < 8; ++y)
             for (int x = 4; x < 12; ++x) {

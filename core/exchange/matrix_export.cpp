@@ -36,9 +36,13 @@ std::string export_matrices(const std::string& method, const ShadowSetup& setup,
     const bool glsl = format == MatrixFormat::glsl;
     const std::string vec4 = glsl ? "const vec4 " : "static const float4 ",
                       scalar = glsl ? "const float " : "static const float ";
-    std::string out = "// ShadowLab, " + method +
-                      ": world (x, y, z, 1) -> (u, v, d, w); u, v, d in [0,1] after / w.\n"
-                      "// Bias before the division: d = (d_pre - zBiasScale * bias) / w, bias in world units.\n";
+    std::string out =
+        "// ShadowLab, " + method +
+        ": world (x, y, z, 1) -> (u, v, d, w); u, v, d in [0,1] after / w.\n"
+        "// Bias as ShadowLab's lookup applies it, in world units along the light l: the depth compared\n"
+        "// is the map's depth of the point moved toward the light, d = uvz(p - bias * l).z, exact under\n"
+        "// any projection. zBiasScaleN is XPSM's step 18 pre-division slope, for engines that bias as\n"
+        "// (d_pre - zBiasScale * bias) / w: first order only, z / near times too strong on a perspective map.\n";
     if (setup.maps.size() > 1)
         out += "// " + std::to_string(setup.maps.size()) + " maps, chosen " + to_string(setup.selection.rule) +
                "; viewportN = (u0, v0, u1, v1), the map's tile in the texture.\n";

@@ -61,17 +61,6 @@ std::vector<KernelTap> kernel_taps(PcfKernel kernel, int n) {
     return taps;
 }
 
-std::vector<KernelTap> filter_taps(const ShadowFilter& f) {
-    switch (f.kind) {
-        case FilterKind::hard: return {{glm::dvec2(0.0), 1.0}};
-        case FilterKind::pcf: return kernel_taps(f.kernel, f.kernel_size);
-        case FilterKind::pcss: return kernel_taps(PcfKernel::poisson, f.kernel_size);
-        case FilterKind::vsm:
-        case FilterKind::evsm: return {};
-    }
-    return {};
-}
-
 const std::vector<glm::dvec2>& poisson_disk(int count) {
     static std::mutex mutex;
     static std::map<int, std::vector<glm::dvec2>> disks;  // never erased: references stay valid
@@ -83,6 +72,15 @@ const std::vector<glm::dvec2>& poisson_disk(int count) {
 
 double pixel_rotation(int x, int y) {
     return 2.0 * std::numbers::pi * (double(hash_pixel(std::uint32_t(x), std::uint32_t(y))) / 4294967296.0);
+}
+
+const char* to_string(PcfKernel kernel) {
+    switch (kernel) {
+        case PcfKernel::box: return "box";
+        case PcfKernel::tent: return "tent";
+        case PcfKernel::poisson: return "poisson";
+    }
+    return "?";
 }
 
 }  // namespace shadowlab

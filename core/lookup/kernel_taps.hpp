@@ -4,9 +4,14 @@
 #include <vector>
 #include <glm/glm.hpp>
 
-#include "lookup/shadow_filter.hpp"
-
 namespace shadowlab {
+
+enum class PcfKernel {
+    box,      // N×N taps, equal weights
+    tent,     // N×N taps, weights falling linearly to zero one tap spacing past the radius
+    poisson,  // N² taps of a Poisson disk, turned per pixel (the banding of a regular grid becomes noise)
+};
+const char* to_string(PcfKernel kernel);
 
 struct KernelTap {
     glm::dvec2 offset;  // in the kernel's radius: within [-1, 1]² (box, tent) or the unit disc (poisson)
@@ -17,11 +22,6 @@ struct KernelTap {
 // linearly along each axis to zero one tap spacing beyond the radius. poisson: poisson_disk(n²),
 // equal weights.
 std::vector<KernelTap> kernel_taps(PcfKernel kernel, int n);
-
-// The taps a filter reads around a lookup, in the order it reads them: hard the centre's texel
-// alone, pcf its kernel, pcss the Poisson disk of N² (for its search and its filter alike); vsm and
-// evsm none (they read the prefiltered moments). The CPU reader and the GPU pass both take this list.
-std::vector<KernelTap> filter_taps(const ShadowFilter& filter);
 
 // `count` points in the unit disc, no two closer than the distribution allows (Mitchell's best
 // candidate, 16 candidates per point, from a fixed seed: every run and the GPU get the same disk).

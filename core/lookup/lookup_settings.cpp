@@ -1,11 +1,9 @@
 #include "lookup/lookup_settings.hpp"
 
 #include <algorithm>
-#include <map>
+#include <deque>
 #include <stdexcept>
 #include <string>
-
-#include "lookup/chebyshev.hpp"
 
 namespace shadowlab {
 namespace {
@@ -21,55 +19,39 @@ Enum enum_named(const std::string& name, std::initializer_list<Enum> values) {
 
 }  // namespace
 
+SettingSpec kernel_size_setting() {
+    return {.name = "kernel_size",
+            .description =
+                "N: pcf's N×N (or N² Poisson) taps, each of pcss's two passes N² taps, vsm/evsm's blur N "
+                "texels wide",
+            .default_value = "3",
+            .min = 1,
+            .max = kMaxKernelSide};
+}
+
+// The filter setting: every filter's name, the first the default.
+SettingSpec filter_setting() {
+    SettingSpec spec{.name = "filter", .description = "how a lookup reads the map: "};
+    const std::deque<FilterDescriptor>& filters = all_filters();
+    for (size_t i = 0; i < filters.size(); ++i) {
+        const FilterDescriptor& f = filters[i];
+        spec.description += (i == 0                    ? ""
+                             : i + 1 == filters.size() ? ", or "
+                                                       : ", ") +
+                            f.name + (f.brief.empty() ? "" : " (" + f.brief + ")");
+        spec.choices.push_back(f.name);
+    }
+    spec.default_value = spec.choices.at(0);
+    return spec;
+}
+
 std::vector<SettingSpec> lookup_settings() {
-    const double evsm_limit = evsm_exponent_limit();
-    return {
-        {.name = "filter",
-         .description = "how a lookup reads the map: hard (nearest texel), pcf, vsm, evsm, or pcss (soft shadows "
-                        "sized by the light)",
-         .default_value = "hard",
-         .choices = {"hard", "pcf", "vsm", "evsm", "pcss"}},
-        {.name = "pcf_kernel",
-         .description = "pcf: box or tent N×N taps, or a Poisson disk of N² taps turned per pixel",
-         .default_value = "box",
-         .choices = {"box", "tent", "poisson"}},
-        {.name = "kernel_size",
-         .description = "N: pcf's N×N (or N² Poisson) taps, each of pcss's two passes N² taps, vsm/evsm's blur N "
-                        "texels wide",
-         .default_value = "3",
-         .min = 1,
-         .max = kMaxKernelSide},
-        {.name = "filter_radius",
-         .description = "pcf: the kernel's half-width in texels of the map",
-         .default_value = "1",
-         .min = 0.01,
-         .max = 32},
-        {.name = "filter_world_radius",
-         .description = "pcf: the kernel's half-width in world units across the light (0: in texels, filter_radius)",
-         .default_value = "0",
-         .min = 0,
-         .max = 1e30,
-         .length_power = 1},
-        {.name = "min_variance",
-         .description = "vsm, evsm: the floor of the moments' variance (squared depth units)",
-         .default_value = "1e-6",
-         .min = 0,
-         .max = 0.01},
-        {.name = "bleed_reduction",
-         .description = "vsm, evsm: light bleeding reduction, Chebyshev's bound below this cut to 0 (linstep)",
-         .default_value = "0",
-         .min = 0,
-         .max = 0.99},
-        {.name = "evsm_positive",
-         .description = "evsm: c+ of e^(c+ d); at most ln(FLT_MAX)/2 = 44.36, where e^(2c) overflows a float32",
-         .default_value = "40",
-         .min = 0.01,
-         .max = evsm_limit},
-        {.name = "evsm_negative",
-         .description = "evsm: c- of -e^(-c- d); at most ln(FLT_MAX)/2 = 44.36",
-         .default_value = "5",
-         .min = 0.01,
-         .max = evsm_limit},
+    std::vector<SettingSpec> specs{filter_setting()};
+    for (const FilterDescriptor& f : all_filters())  // each setting once, where a filter first reads it
+        for (const SettingSpec& spec : f.settings)
+            if (std::none_of(specs.begin(), specs.end(), [&](const SettingSpec& s) { return s.name == spec.name; }))
+                specs.push_back(spec);
+    const std::vector<SettingSpec> bias{
         {.name = "bias_constant",
          .description = "depth bias: a constant, world units along the light",
          .default_value = "0",
@@ -91,28 +73,22 @@ std::vector<SettingSpec> lookup_settings() {
          .default_value = "off",
          .choices = {"off", "on"}},
     };
+    specs.insert(specs.end(), bias.begin(), bias.end());
+    return specs;
 }
 
 bool is_lookup_setting(const std::string& name) {
-    static const std::vector<SettingSpec> specs = lookup_settings();
+    const std::vector<SettingSpec> specs = lookup_settings();  // afresh: a filter registered since adds its own
     return std::any_of(specs.begin(), specs.end(), [&](const SettingSpec& spec) { return spec.name == name; });
 }
 
-const std::vector<std::string>& filters_reading(const std::string& setting) {
-    static const std::map<std::string, std::vector<std::string>> table{
-        {"filter", {"hard", "pcf", "vsm", "evsm", "pcss"}},
-        {"pcf_kernel", {"pcf"}},
-        {"kernel_size", {"pcf", "pcss", "vsm", "evsm"}},
-        {"filter_radius", {"pcf"}},
-        {"filter_world_radius", {"pcf"}},
-        {"min_variance", {"vsm", "evsm"}},
-        {"bleed_reduction", {"vsm", "evsm"}},
-        {"evsm_positive", {"evsm"}},
-        {"evsm_negative", {"evsm"}},
-    };
-    static const std::vector<std::string> none;
-    const auto found = table.find(setting);
-    return found == table.end() ? none : found->second;
+std::vector<std::string> filters_reading(const std::string& setting) {
+    std::vector<std::string> names;
+    for (const FilterDescriptor& f : all_filters())
+        if (setting == "filter" || std::any_of(f.settings.begin(), f.settings.end(),
+                                               [&](const SettingSpec& spec) { return spec.name == setting; }))
+            names.push_back(f.name);
+    return names;
 }
 
 SettingSpec lookup_setting_defaulting_to(const std::string& name, const std::string& default_value) {
@@ -126,8 +102,7 @@ SettingSpec lookup_setting_defaulting_to(const std::string& name, const std::str
 
 ShadowLookup lookup_from(const Settings& s, double constant_bias) {
     ShadowLookup lookup{
-        .filter = {.kind = enum_named(s.choice("filter"), {FilterKind::hard, FilterKind::pcf, FilterKind::vsm,
-                                                           FilterKind::evsm, FilterKind::pcss}),
+        .filter = {.kind = filter_named(s.choice("filter")).name,
                    .kernel = enum_named(s.choice("pcf_kernel"), {PcfKernel::box, PcfKernel::tent, PcfKernel::poisson}),
                    .kernel_size = int(s.number("kernel_size")),
                    .radius_texels = s.number("filter_radius"),
@@ -135,7 +110,8 @@ ShadowLookup lookup_from(const Settings& s, double constant_bias) {
                    .min_variance = s.number("min_variance"),
                    .bleed_reduction = s.number("bleed_reduction"),
                    .evsm_positive = s.number("evsm_positive"),
-                   .evsm_negative = s.number("evsm_negative")},
+                   .evsm_negative = s.number("evsm_negative"),
+                   .settings = s},
         .bias = {.constant = s.number("bias_constant"),
                  .slope_scale = s.number("bias_slope"),
                  .normal_offset = s.number("bias_normal"),
@@ -144,8 +120,7 @@ ShadowLookup lookup_from(const Settings& s, double constant_bias) {
         throw std::invalid_argument("setting kernel_size=" + std::to_string(s.number("kernel_size")) +
                                     ": expected a whole number of taps");
     if (lookup.filter.reads_moments() && lookup.filter.radius_world > 0.0)
-        throw std::invalid_argument(std::string("setting filter_world_radius: filter=") +
-                                    to_string(lookup.filter.kind) +
+        throw std::invalid_argument("setting filter_world_radius: filter=" + lookup.filter.kind +
                                     " blurs its moments once per map, in texels (kernel_size); set it to 0");
     if (constant_bias >= 0.0) lookup.bias = {.constant = constant_bias, .slope_scale = 0.0};
     return lookup;

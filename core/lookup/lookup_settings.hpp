@@ -17,12 +17,17 @@ struct ShadowLookup {
     DepthBias bias;
 };
 
+// Every filter's settings (the filter, then each filter's own, in the filters' order) and the depth
+// bias's. A filter registered later adds its own.
 std::vector<SettingSpec> lookup_settings();
 
 // Whether `name` is one of lookup_settings(), and of those, the filters that read a filter setting
-// ("kernel_size": pcf, pcss, vsm, evsm); empty for a depth-bias setting, which every filter reads.
+// ("kernel_size": pcf, vsm, evsm, pcss); empty for a depth-bias setting, which every filter reads.
 bool is_lookup_setting(const std::string& name);
-const std::vector<std::string>& filters_reading(const std::string& setting);
+std::vector<std::string> filters_reading(const std::string& setting);
+
+// The kernel's side N, which several filters read (their descriptors share this spec).
+SettingSpec kernel_size_setting();
 
 // One of them with another default: a method whose maps read best with it declares it among its own
 // settings, and the registry then leaves the shared one out.

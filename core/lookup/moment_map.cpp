@@ -9,8 +9,8 @@
 namespace shadowlab {
 namespace {
 
-glm::dvec4 moments_of(double depth, const ShadowFilter& filter) {
-    if (filter.kind == FilterKind::vsm) return {depth, depth * depth, 0.0, 0.0};
+glm::dvec4 moments_of(double depth, Moments kind, const ShadowFilter& filter) {
+    if (kind == Moments::depth) return {depth, depth * depth, 0.0, 0.0};
     const double positive = evsm_positive_warp(depth, filter.evsm_positive);
     const double negative = evsm_negative_warp(depth, filter.evsm_negative);
     return {positive, positive * positive, negative, negative * negative};
@@ -45,7 +45,8 @@ void blur_along(std::vector<glm::dvec4>& texels, int resolution, glm::ivec2 firs
 MomentMap blurred_moments(const DepthMap& depth, const ShadowSetup& setup, const ShadowFilter& filter) {
     const int n = depth.resolution;
     std::vector<glm::dvec4> texels(depth.depth.size());
-    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = moments_of(depth.depth[i], filter);
+    const Moments kind = filter_of(filter).moments;
+    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = moments_of(depth.depth[i], kind, filter);
     for (const ShadowMap& map : setup.maps) {
         const glm::ivec2 first = texel_of(map, glm::dvec2(0.0), n), last = texel_of(map, glm::dvec2(1.0), n);
         blur_along(texels, n, first, last, 0, filter.kernel_size);

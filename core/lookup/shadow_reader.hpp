@@ -3,6 +3,7 @@
 // setup's depth texture with a filter and a depth bias (lookup/lookup_settings.hpp). The metrics,
 // the shimmer runs and the views read shadows through it; the GPU pass
 // (viewer/render/shadow_map_pass.cpp) mirrors it step by step.
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -31,6 +32,23 @@ struct LookupCount {
     std::size_t searches_clamped = 0;  // pcss: blocker searches cut at kMaxSearchTexels
 };
 
+// A value where it is finite, `otherwise` where not (a texel of no size, a light at the blocker).
+inline double finite_or(double value, double otherwise) { return std::isfinite(value) ? value : otherwise; }
+// A tap's offset turned by the angle whose cosine and sine are c and s.
+inline glm::dvec2 rotated(const glm::dvec2& v, double c, double s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+
+// The receiver under one map, biased (ShadowReader::under): what a filter's visibility reads.
+struct MapReceiver {
+    const ShadowMap& map;
+    glm::dvec3 position;         // the point looked up: the receiver, moved by the normal offset
+    glm::dvec3 light_direction;  // the way light travels there
+    double texels;               // across the map's tile
+    glm::dvec2 uv;
+    double depth;               // the point's depth, less the bias in depth units
+    glm::dvec2 plane_gradient;  // receiver plane: ∂d/∂(u, v); 0 when off
+    double texel_world;         // a texel's world width across the light there
+};
+
 class ShadowReader {
 public:
     // PCSS's blocker search reaches at most this many texels of the map from the point: the light's
@@ -53,24 +71,27 @@ public:
     const ShadowSetup& setup() const { return setup_; }
     const DepthMap& depth() const { return depth_; }
     const ShadowLookup& lookup() const { return lookup_; }
+    const Light& light() const { return light_; }
+    const std::vector<KernelTap>& taps() const { return taps_; }  // filter_taps, read once
     // The blurred moments (vsm, evsm), nullopt for the other filters; and the time the blur took.
     const std::optional<MomentMap>& moments() const { return moments_; }
     double prefilter_ms() const { return prefilter_ms_; }
 
-private:
-    struct MapReceiver;  // the receiver under one map: its (u, v), biased depth, texel size
-    std::optional<MapReceiver> under(int map, const Receiver& receiver) const;
-    double map_visibility(int map, const Receiver& receiver, LookupCount* count) const;
+    // The weighted share of `taps` the receiver passes, turned by `rotation` and spread over
+    // radius_texels: what hard, pcf and pcss read through.
     double lit_share(const MapReceiver& m, const std::vector<KernelTap>& taps, double radius_texels, double rotation,
                      LookupCount* count) const;
-    double soft_shadow(const MapReceiver& m, const Receiver& receiver, LookupCount* count) const;
-    double chebyshev_visibility(const MapReceiver& m, LookupCount* count) const;
+
+private:
+    std::optional<MapReceiver> under(int map, const Receiver& receiver) const;
+    double map_visibility(int map, const Receiver& receiver, LookupCount* count) const;
 
     const ShadowSetup& setup_;
     const DepthMap& depth_;
     const Light& light_;
     ShadowLookup lookup_;
-    std::vector<KernelTap> taps_;  // filter_taps: hard's one texel, pcf's kernel, pcss's Poisson disk
+    const FilterDescriptor* filter_;  // lookup_.filter's, resolved once
+    std::vector<KernelTap> taps_;     // filter_taps: hard's one texel, pcf's kernel, pcss's Poisson disk
     std::optional<MomentMap> moments_;
     double prefilter_ms_ = 0.0;
 };

@@ -15,6 +15,7 @@
 #include "methods/uniform.hpp"
 #include "methods/xpsm.hpp"
 #include "planar/planar_technique.hpp"
+#include "registry/filter_registry.hpp"
 #include "registry/method.hpp"
 #include "volumes/volumes_technique.hpp"
 
@@ -27,12 +28,18 @@ constexpr LightSupport kPositionedOnly{false, true, true};
 
 // Every map is read through a filter and a bias: their settings follow a map method's own, except
 // those it declares itself (with a default of its own).
+// Again after a filter is registered: its settings are added, and the filter setting (the method's
+// own default kept) offers it.
 void add_lookup_settings(Method& method) {
     if (!method.makes_maps()) return;
-    for (const SettingSpec& spec : lookup_settings())
-        if (std::none_of(method.settings.begin(), method.settings.end(),
-                         [&](const SettingSpec& own) { return own.name == spec.name; }))
+    for (const SettingSpec& spec : lookup_settings()) {
+        const auto own = std::find_if(method.settings.begin(), method.settings.end(),
+                                      [&](const SettingSpec& s) { return s.name == spec.name; });
+        if (own == method.settings.end())
             method.settings.push_back(spec);
+        else if (spec.name == "filter")
+            own->choices = spec.choices, own->description = spec.description;
+    }
 }
 
 std::deque<Method> with_lookup_settings(std::deque<Method> methods) {
@@ -161,6 +168,11 @@ std::string method_names(const std::string& separator) {
 const Method& method_or_throw(const std::string& name) {
     if (const Method* m = find_method(name)) return *m;
     throw std::invalid_argument("unknown method '" + name + "' (known: " + method_names(", ") + ")");
+}
+
+void register_filter(FilterDescriptor filter) {
+    add_filter(std::move(filter));
+    for (Method& m : registry()) add_lookup_settings(m);
 }
 
 void register_method(Method method) {

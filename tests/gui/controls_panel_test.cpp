@@ -104,7 +104,7 @@ private slots:
         QVERIFY(window.open_file(QString(SHADOWLAB_SOURCE_DIR) + "/data/scenes/box_on_plane.json"));
         window.controls()->findChild<QComboBox*>("filter")->setCurrentText("pcf");
         QVERIFY(testing::settled(window));
-        QCOMPARE(QString(to_string(window.inspection()->lookup.filter.kind)), QString("pcf"));
+        QCOMPARE(QString::fromStdString(window.inspection()->lookup.filter.kind), QString("pcf"));
         auto* kernel = window.controls()->findChild<QDoubleSpinBox*>("kernel_size");
         kernel->setValue(2.5);
         emit kernel->editingFinished();

@@ -122,7 +122,7 @@ std::string judged_as(const Inspection& in, const ReferenceImage& ref) {
     char text[200];
     if (in.has_map())
         std::snprintf(text, sizeof text, "%s %d², filter %s", in.name().c_str(), in.resolution,
-                      to_string(in.lookup.filter.kind));
+                      in.lookup.filter.kind.c_str());
     else
         std::snprintf(text, sizeof text, "%s", in.name().c_str());
     if (ref.light_samples == 0) return text + std::string(", against the exact reference");
@@ -132,7 +132,7 @@ std::string judged_as(const Inspection& in, const ReferenceImage& ref) {
 // Why the automatic choice paints the signed error (soft_shadows).
 std::string why_signed(const Inspection& in) {
     if (in.scene.light.is_area()) return "the light has a size";
-    return std::string("filter ") + to_string(in.lookup.filter.kind) + " is not hard";
+    return "filter " + in.lookup.filter.kind + " is not hard";
 }
 
 std::string visibility_summary(const VisibilityError& v) {

@@ -84,7 +84,7 @@ float largest_value(const DepthMap& texture) {
 DepthMap moment_texture(const Inspection& in, TextureShown shown) {
     const ShadowFilter& filter = in.lookup.filter;
     const MomentMap moments = blurred_moments(in.depth(), in.setup, filter);
-    const bool exponential = filter.kind == FilterKind::evsm;
+    const bool exponential = filter_of(filter).moments == Moments::exponential;
     DepthMap texture{.resolution = moments.resolution, .depth = std::vector<float>(moments.moments.size())};
     for (size_t i = 0; i < moments.moments.size(); ++i) {
         const double mean = moments.moments[i].x, second = moments.moments[i].y;
@@ -360,7 +360,7 @@ PaintedTexture painted_depth(const Inspection& in, std::string caption) {
 // The moments the filter reads, with their colour bar (the deviation) and the caption's words.
 PaintedTexture painted_moments(vtkRenderer* renderer, const Inspection& in, TextureShown which) {
     const ShadowFilter& filter = in.lookup.filter;
-    const bool exponential = filter.kind == FilterKind::evsm;
+    const bool exponential = filter_of(filter).moments == Moments::exponential;
     const std::string blur =
         " over a " + std::to_string(filter.kernel_size) + "×" + std::to_string(filter.kernel_size) + " box";
     const float empty = which == TextureShown::moment_mean ? 1.0f : std::numeric_limits<float>::quiet_NaN();
@@ -394,8 +394,7 @@ PaintedTexture painted_moments(vtkRenderer* renderer, const Inspection& in, Text
 PaintedTexture painted_texture(vtkRenderer* renderer, const Inspection& in, TextureShown which) {
     if (which == TextureShown::depth) return painted_depth(in, "");
     if (!in.lookup.filter.reads_moments())
-        return painted_depth(in,
-                             std::string("depth (filter ") + to_string(in.lookup.filter.kind) + " reads no moments)");
+        return painted_depth(in, "depth (filter " + in.lookup.filter.kind + " reads no moments)");
     return painted_moments(renderer, in, which);
 }
 

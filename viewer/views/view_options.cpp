@@ -23,7 +23,7 @@ std::optional<SpacePreset> space_preset_named(const std::string& name) {
 }
 
 bool soft_shadows(const Inspection& in) {
-    return in.scene.light.is_area() || (in.has_map() && in.lookup.filter.kind != FilterKind::hard);
+    return in.scene.light.is_area() || (in.has_map() && in.lookup.filter.soft());
 }
 
 bool shows_signed_error(const Inspection& in, ErrorShown shown) {

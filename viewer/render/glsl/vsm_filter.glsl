@@ -1,0 +1,7 @@
+// Variance shadow maps (lookup/variance_filters.cpp): Chebyshev's bound at the receiver's depth on
+// the blurred moments (d, d²).
+float shadowFilter_vsm(int i, ShadowMapReceiver m, float rotation) {
+  vec4 mo = shadowSampleMoments(i, m.uv, false);
+  float p = shadowChebyshevUpperBound(mo.x, max(mo.y - mo.x * mo.x, shadowMinVariance), m.depth);
+  return shadowReduceLightBleeding(p, shadowBleedReduction);
+}
