@@ -17,32 +17,10 @@
 #include <vtkShaderProgram.h>
 #include <vtk_glew.h>
 
+#include "render/glsl_source.hpp"
+
 namespace shadowlab {
 namespace {
-
-// The polygons as they are, w included: a vertex at infinity projects to its vanishing point.
-constexpr const char* kVertex = R"(//VTK::System::Dec
-in vec4 volumePosition;
-uniform mat4 worldToClip;
-void main() {
-  gl_Position = worldToClip * volumePosition;
-  gl_ClipDistance[0] = gl_Position.z + gl_Position.w;  // the near plane, which GL_DEPTH_CLAMP turns off
-}
-)";
-
-// The volume writes no colour (the colour mask is off while it counts).
-constexpr const char* kFragment = R"(//VTK::System::Dec
-//VTK::Output::Dec
-void main() { gl_FragData[0] = vec4(0.0); }
-)";
-
-// Steps 1 and 3, after VTK's lighting: the scene's fragments shaded as lit or as shadowed.
-constexpr const char* kShade = R"(//VTK::Light::Impl
-  {
-    vec3 p = surfaceWorldVSOutput.xyz;
-    gl_FragData[0] = surfaceColour(ambientColor, diffuseColor, opacity, p, surfaceSeenNormal(p), surfaceLit);
-  }
-)";
 
 // The stencil operations per rule (Everitt and Kilgard 2002, section 4: z-fail; Heidmann: z-pass).
 void set_stencil_ops(vtkOpenGLState* gl, StencilRule rule) {
@@ -156,7 +134,8 @@ void StencilVolumePass::Render(const vtkRenderState* s) {
 }
 
 vtkShaderProgram* StencilVolumePass::prepare(vtkOpenGLRenderWindow* window) {
-    vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(kVertex, kFragment, "");
+    const std::string vertex(glsl_source("stencil_volume_vs")), fragment(glsl_source("stencil_volume_fs"));
+    vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(vertex.c_str(), fragment.c_str(), "");
     if (!program) return nullptr;
     if (!vao_) {
         vao_ = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
@@ -232,7 +211,7 @@ bool StencilVolumePass::PreReplaceShaderValues(std::string& vertex, std::string&
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\nuniform float surfaceLit;\n",
                                  false);
     declare_surface_shading(fragment);
-    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", kShade, false);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", std::string(glsl_source("stencil_shade")), false);
     return true;
 }
 

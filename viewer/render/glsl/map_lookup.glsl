@@ -1,0 +1,101 @@
+// Stage 2, after the projections: select_map, blend_of, texel_of, uv_derivative, depth_slope and
+// distance_back_to_depth (maps/map_lookup.cpp) line by line.
+uniform int shadowMapCount;
+uniform int shadowMapCubeFace[shadowMaxMaps];
+uniform vec4 shadowMapViewport[shadowMaxMaps];    // (u0, v0, u1, v1): the tile in the texture
+uniform vec4 shadowMapTileTexels[shadowMaxMaps];  // first and last texel (x, y, x, y) of the tile
+uniform float shadowMapZBiasScale[shadowMaxMaps];
+uniform int shadowSelectionRule;
+uniform vec3 shadowSelectionEye;
+uniform vec3 shadowSelectionViewAxis;
+uniform float shadowSelectionSplitDepths[shadowMaxMaps + 1];
+uniform int shadowSelectionSplitCount;
+uniform float shadowSelectionBlendBand;
+uniform vec3 shadowSelectionCentre;
+uniform sampler2D shadowDepth;
+uniform int shadowResolution;
+bool shadowInUnitRange(float t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
+bool shadowOnMap(vec4 h) { return h.w > 0.0 && shadowInUnitRange(h.x / h.w) && shadowInUnitRange(h.y / h.w); }
+// 0..5 for +x, -x, +y, -y, +z, -z: the major axis of r (x, then y, on ties) and its sign.
+int shadowMajorAxisFace(vec3 r) {
+  vec3 a = abs(r);
+  int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+  return 2 * axis + (r[axis] < 0.0 ? 1 : 0);
+}
+float shadowViewDepth(vec3 p) { return dot(p - shadowSelectionEye, shadowSelectionViewAxis); }
+// Map i serves view depths in [split i, split i + 1), the last split included.
+int shadowByViewDepth(vec3 p) {
+  float depth = shadowViewDepth(p);
+  for (int i = 0; i + 1 < shadowSelectionSplitCount; ++i)
+    if (depth >= shadowSelectionSplitDepths[i] &&
+        (depth < shadowSelectionSplitDepths[i + 1] ||
+         (i + 2 == shadowSelectionSplitCount && depth == shadowSelectionSplitDepths[i + 1])))
+      return i;
+  return -1;
+}
+// Whether map i holds p under the rules that take the first map holding it.
+bool shadowHolds(int i, vec3 p) {
+  if (shadowSelectionRule == shadowRuleTileBounds) return shadowOnMap(shadowHomogeneous(i, p));
+  if (shadowSelectionRule == shadowRuleCubeFace)
+    return shadowMapCubeFace[i] == shadowMajorAxisFace(p - shadowSelectionCentre);
+  return shadowSelectionRule == shadowRuleHemisphere && shadowHemisphereSide(i, p) >= 0.0;
+}
+int shadowSelectMap(vec3 p) {
+  if (shadowMapCount == 0) return -1;
+  if (shadowSelectionRule == shadowRuleOnly) return 0;
+  if (shadowSelectionRule == shadowRuleViewDepth) return shadowByViewDepth(p);
+  for (int i = 0; i < shadowMapCount; ++i)
+    if (shadowHolds(i, p)) return i;
+  return -1;
+}
+// blend_of: map i + 1's share at p, rising from 0 to 1 over the last blend band of split i; none
+// after the last split or under the other rules.
+float shadowBlendWeight(int i, vec3 p) {
+  if (shadowSelectionRule != shadowRuleViewDepth || !(shadowSelectionBlendBand > 0.0) ||
+      !(i >= 0 && i + 2 < shadowSelectionSplitCount))
+    return 0.0;
+  float splitEnd = shadowSelectionSplitDepths[i + 1];
+  float band = shadowSelectionBlendBand * (splitEnd - shadowSelectionSplitDepths[i]);
+  return clamp((shadowViewDepth(p) - (splitEnd - band)) / band, 0.0, 1.0);
+}
+// The texel map i's (u, v) reads: the nearest, kept in the map's tile.
+ivec2 shadowTexelOf(int i, vec2 uv) {
+  vec4 tile = shadowMapViewport[i];
+  vec2 t = (tile.xy + uv * (tile.zw - tile.xy)) * float(shadowResolution);
+  return ivec2(clamp(floor(t), shadowMapTileTexels[i].xy, shadowMapTileTexels[i].zw));
+}
+float shadowTileResolution(int i) {
+  return (shadowMapViewport[i].z - shadowMapViewport[i].x) * float(shadowResolution);
+}
+vec2 shadowUv(int i, vec3 p) { vec4 h = shadowHomogeneous(i, p); return h.xy / h.w; }
+// uv_derivative: the quotient rule on a linear map's rows; a central difference for a paraboloid.
+vec2 shadowUvDerivative(int i, vec3 p, vec3 direction) {
+  if (shadowMapProjection[i] == shadowParaboloid) {
+    float step = 1e-3 * length(p - shadowMapParaboloidCentre[i]);  // float32: a coarser step than the CPU's
+    return (shadowUv(i, p + step * direction) - shadowUv(i, p - step * direction)) / (2.0 * step);
+  }
+  vec4 h = shadowMapWorldToUvz[i] * vec4(p, 1.0), dh = shadowMapWorldToUvz[i] * vec4(direction, 0.0);
+  return (dh.xy * h.w - h.xy * dh.w) / (h.w * h.w);
+}
+// ∂d/∂t: the depth after the division per world unit along l at p.
+float shadowDepthSlope(int i, vec3 l, vec3 p) {
+  if (shadowMapProjection[i] == shadowParaboloid)  // d = (|q| - near) / (far - near)
+    return dot(normalize(shadowInParaboloidFrame(i, p)), mat3(shadowMapParaboloidFrame[i]) * l) /
+           (shadowMapParaboloidFar[i] - shadowMapParaboloidNear[i]);
+  vec4 h = shadowMapWorldToUvz[i] * vec4(p, 1.0), dh = shadowMapWorldToUvz[i] * vec4(l, 0.0);
+  return (dh.z * h.w - h.z * dh.w) / (h.w * h.w);  // the quotient rule on d_pre / w
+}
+// The shaders' stand-in for the CPU's infinities (float32 holds up to 3.4e38).
+const float shadowUnbounded = 1e30;
+// distance_back_to_depth: how far from p back toward the light the depth falls to `depth`;
+// unbounded where the ray never reaches it.
+float shadowDistanceBackToDepth(int i, vec3 l, vec3 p, float depth) {
+  if (shadowMapProjection[i] == shadowParaboloid) {  // back along a radial ray, d falls by 1 / (far - near) per unit
+    vec4 h = shadowParaboloidHomogeneous(i, p);
+    return (h.z - depth) * (shadowMapParaboloidFar[i] - shadowMapParaboloidNear[i]);
+  }
+  // At p - s l the map holds (h.z - s dh.z) / (h.w - s dh.w); set it to `depth` and solve for s.
+  vec4 h = shadowMapWorldToUvz[i] * vec4(p, 1.0), dh = shadowMapWorldToUvz[i] * vec4(l, 0.0);
+  float s = (h.z - depth * h.w) / (dh.z - depth * dh.w);
+  return !isinf(s) && !isnan(s) && s >= 0.0 ? s : shadowUnbounded;
+}
