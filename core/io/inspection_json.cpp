@@ -101,6 +101,7 @@ Json to_json(const ShadowMap& map) {
     Json out = {{"projection", kind.name}};
     Json& parameters = kind.parameters_key ? out[kind.parameters_key] : out;
     for (const NamedValue& v : kind.parameters(map)) parameters[v.name] = to_json(v.value);
+    if (kind.numbered_face) out["cube_face"] = map.cube_face;
     out["viewport"] = to_json(map.viewport);
     out["z_bias_scale"] = map.z_bias_scale;
     return out;

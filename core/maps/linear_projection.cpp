@@ -39,10 +39,6 @@ double distance_back_to_depth(const ShadowMap& map, const glm::dvec3& l, const g
 
 std::vector<NamedValue> matrix(const ShadowMap& map) { return {{"world_to_uvz", map.world_to_uvz}}; }
 
-std::vector<NamedValue> matrix_and_face(const ShadowMap& map) {
-    return {{"world_to_uvz", map.world_to_uvz}, {"cube_face", double(map.cube_face)}};
-}
-
 }  // namespace
 
 constinit const ProjectionKind linear_projection{.name = "linear",
@@ -65,7 +61,8 @@ constinit const ProjectionKind cube_face_projection{.name = "cube face",
                                                     .uv_derivative = uv_derivative,
                                                     .depth_slope = depth_slope,
                                                     .distance_back_to_depth = distance_back_to_depth,
-                                                    .parameters = matrix_and_face,
+                                                    .parameters = matrix,
+                                                    .numbered_face = true,
                                                     .glsl = "linear_projection",
                                                     .glsl_prefix = "shadowLinear"};
 

@@ -47,6 +47,9 @@ struct ProjectionKind {
     // under the JSON key `parameters_key` (nullptr: in the map's own object).
     std::vector<NamedValue> (*parameters)(const ShadowMap& map);
     const char* parameters_key = nullptr;
+    // Whether a map of this kind is one numbered face of a set (ShadowMap::cube_face, which the cube_face
+    // selection rule picks by): written as the integer "cube_face".
+    bool numbered_face = false;
 
     // Its GLSL: viewer/render/glsl/<glsl>.glsl, defining <glsl_prefix>Homogeneous(int map, vec3 p) and
     // the other functions above under the same prefix (docs/ARCHITECTURE.md, "Adding a projection kind").
