@@ -90,7 +90,8 @@ void print_steps(const Trace& trace) {
 void print_map(size_t i, const ShadowMap& map) {
     const std::string name = "\nmap " + std::to_string(i);
     const ProjectionKind& kind = projection_kind(map);
-    std::cout << name << ": " << kind.name << (kind.numbered_face ? " " + std::to_string(map.cube_face) : "");
+    std::cout << name << ": " << kind.name;
+    if (kind.numbered_face) std::cout << " " << map.cube_face;
     for (const NamedValue& v : kind.parameters(map))
         std::cout << name << " " << v.name << (std::holds_alternative<glm::dmat4>(v.value) ? " (rows):" : ":")
                   << format_value(v.value, "");
