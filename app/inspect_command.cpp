@@ -8,6 +8,7 @@
 
 #include "exchange/inspection_json.hpp"
 #include "io/value_text.hpp"
+#include "maps/projection_kind.hpp"
 #include "math/matrix.hpp"
 #include "measure_command.hpp"
 #include "registry/method.hpp"
@@ -88,15 +89,12 @@ void print_steps(const Trace& trace) {
 
 void print_map(size_t i, const ShadowMap& map) {
     const std::string name = "\nmap " + std::to_string(i);
-    if (map.projection == Projection::paraboloid)
-        std::cout << name << " paraboloid: centre" << format_value(map.paraboloid.centre, "") << ", near "
-                  << map.paraboloid.near << ", far " << map.paraboloid.far
-                  << "; frame_from_world (rows):" << format_value(glm::dmat4(map.paraboloid.frame_from_world), "");
-    else
-        std::cout << name
-                  << (map.projection == Projection::cube_face ? " (cube face " + std::to_string(map.cube_face) + ")"
-                                                              : "")
-                  << " world_to_uvz (rows):" << format_value(map.world_to_uvz, "");
+    const ProjectionKind& kind = projection_kind(map);
+    std::cout << name << ": " << kind.name;
+    if (kind.numbered_face) std::cout << " " << map.cube_face;
+    for (const NamedValue& v : kind.parameters(map))
+        std::cout << name << " " << v.name << (std::holds_alternative<glm::dmat4>(v.value) ? " (rows):" : ":")
+                  << format_value(v.value, "");
     if (map.viewport != glm::dvec4(0.0, 0.0, 1.0, 1.0))
         std::cout << name << " tile (u0, v0, u1, v1):" << format_value(map.viewport, "");
     std::cout << name << " z_bias_scale: " << map.z_bias_scale << "\n";

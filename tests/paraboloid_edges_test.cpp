@@ -202,7 +202,10 @@ TEST(SplitForParaboloid, EveryEdgeUnderTheTargetAndWatertight) {
     const WorldTriangles input = tessellate(scene);
     for (const auto& [edge, uses] : edge_uses(input)) ASSERT_EQ(uses, 2) << "the input boxes are closed";
     constexpr double texels_per_unit = 512.0, target = 0.5;
-    const WorldTriangles split = split_for_paraboloid(input, kDownFromTwo, texels_per_unit, target);
+    constexpr int resolution = 1024;  // the tile the whole texture
+    const ShadowMap map{.projection = Projection::paraboloid, .paraboloid = kDownFromTwo, .max_sagitta_texels = target};
+    ASSERT_EQ(texels_per_disc_unit(map, resolution), texels_per_unit);
+    const WorldTriangles split = split_casters(input, std::vector<bool>(scene.objects.size(), true), map, resolution);
     std::printf("split: %zu triangles -> %zu\n", input.triangles.size(), split.triangles.size());
     EXPECT_GT(split.triangles.size(), 20 * input.triangles.size());
     double worst = 0.0;
@@ -219,7 +222,7 @@ TEST(SplitForParaboloid, EveryEdgeUnderTheTargetAndWatertight) {
         split_edges.insert(std::minmax(split.vertices[edge.first], split.vertices[edge.second], Lexicographic{}));
     for (const auto& [edge, uses] : edge_uses(input)) {  // split_edge gives the pieces the mesh holds
         const std::vector<glm::dvec3> points =
-            split_edge(kDownFromTwo, input.vertices[edge.first], input.vertices[edge.second], texels_per_unit, target);
+            split_edge(map, input.vertices[edge.first], input.vertices[edge.second], resolution);
         for (std::size_t k = 0; k + 1 < points.size(); ++k)
             EXPECT_TRUE(split_edges.count(std::minmax(points[k], points[k + 1], Lexicographic{}))) << k;
     }

@@ -1,5 +1,6 @@
 #include "exchange/inspection_json.hpp"
 
+#include "maps/projection_kind.hpp"
 #include "math/matrix.hpp"
 
 namespace shadowlab {
@@ -96,15 +97,11 @@ Json to_json(const Step& step) {
 }
 
 Json to_json(const ShadowMap& map) {
-    Json out = {{"projection", to_string(map.projection)}};
-    if (map.projection == Projection::paraboloid)
-        out["paraboloid"] = {{"centre", to_json(map.paraboloid.centre)},
-                             {"frame_from_world", to_json(glm::dmat4(map.paraboloid.frame_from_world))},
-                             {"near", map.paraboloid.near},
-                             {"far", map.paraboloid.far}};
-    else
-        out["world_to_uvz"] = to_json(map.world_to_uvz);
-    if (map.projection == Projection::cube_face) out["cube_face"] = map.cube_face;
+    const ProjectionKind& kind = projection_kind(map);
+    Json out = {{"projection", kind.name}};
+    Json& parameters = kind.parameters_key ? out[kind.parameters_key] : out;
+    for (const NamedValue& v : kind.parameters(map)) parameters[v.name] = to_json(v.value);
+    if (kind.numbered_face) out["cube_face"] = map.cube_face;
     out["viewport"] = to_json(map.viewport);
     out["z_bias_scale"] = map.z_bias_scale;
     return out;

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "exchange/inspection_json.hpp"
+#include "maps/projection_kind.hpp"
 
 namespace shadowlab {
 namespace {
@@ -22,6 +23,13 @@ std::string entries(const glm::dmat4& m, bool by_columns, const std::string& sep
         out += a ? separator : "";
         for (int b = 0; b < 4; ++b) out += (b ? ", " : "") + number(by_columns ? m[a][b] : m[b][a]);
     }
+    return out;
+}
+
+// ", centre, frame_from_world, near, far": the names of a map's parameters.
+std::string parameter_names(const ProjectionKind& kind, const ShadowMap& map) {
+    std::string out;
+    for (const NamedValue& v : kind.parameters(map)) out += (out.empty() ? " " : ", ") + v.name;
     return out;
 }
 
@@ -49,9 +57,10 @@ std::string export_matrices(const std::string& method, const ShadowSetup& setup,
     for (size_t i = 0; i < setup.maps.size(); ++i) {
         const std::string n = std::to_string(i);
         const ShadowMap& map = setup.maps[i];
-        if (map.projection == Projection::paraboloid)  // no 4x4 can say it: its parameters instead
-            out +=
-                "// map " + n + " is a paraboloid hemisphere: see the JSON export for its centre, frame, near, far.\n";
+        const ProjectionKind& kind = projection_kind(map);
+        if (!kind.projective())  // no 4x4 can say it: its parameters instead
+            out += "// map " + n + " is a " + kind.name + " map: see the JSON export for its" +
+                   parameter_names(kind, map) + ".\n";
         else
             out += glsl ? "const mat4 worldToUvz" + n + " = mat4(\n    " + entries(map.world_to_uvz, true, ",\n    ") +
                               ");\n"

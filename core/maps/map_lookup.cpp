@@ -4,25 +4,12 @@
 #include <cmath>
 
 #include "geometry/preimage.hpp"
+#include "maps/projection_kind.hpp"
 
 namespace shadowlab {
 namespace {
 
 bool in_unit_range(double t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
-
-// Seed 002 normalizes the vector before assigning it and tests z < 0 in both of its lookup
-// branches; here each hemisphere is its own map with its own frame (the back one turned half a
-// turn about y), so one formula, (d.x, d.y) / (1 + d.z), serves both.
-glm::dvec4 paraboloid_homogeneous(const Paraboloid& p, const glm::dvec3& world) {
-    const glm::dvec3 q = p.frame_from_world * (world - p.centre);
-    const double distance = glm::length(q);
-    if (!(distance > 0.0)) return glm::dvec4(0.0);
-    const glm::dvec3 d = q / distance;
-    const double denominator = 1.0 + d.z;
-    if (!(denominator > 1e-12)) return glm::dvec4(0.0);  // straight behind: the map's singular point
-    const glm::dvec2 uv = (glm::dvec2(d.x, d.y) / denominator + 1.0) / 2.0;
-    return glm::dvec4(uv, (distance - p.near) / (p.far - p.near), 1.0);
-}
 
 // 0..5 for +x, -x, +y, -y, +z, -z: the major axis of r and its sign.
 int major_axis_face(const glm::dvec3& r) {
@@ -59,15 +46,6 @@ bool on_map(const glm::dvec4& h) { return h.w > 0.0 && in_unit_range(h.x / h.w) 
 
 }  // namespace
 
-const char* to_string(Projection projection) {
-    switch (projection) {
-        case Projection::linear: return "linear";
-        case Projection::paraboloid: return "paraboloid";
-        case Projection::cube_face: return "cube face";
-    }
-    return "?";
-}
-
 const char* to_string(MapSelection::Rule rule) {
     switch (rule) {
         case MapSelection::Rule::only: return "one map";
@@ -80,8 +58,7 @@ const char* to_string(MapSelection::Rule rule) {
 }
 
 glm::dvec4 map_homogeneous(const ShadowMap& map, const glm::dvec3& world) {
-    if (map.projection == Projection::paraboloid) return paraboloid_homogeneous(map.paraboloid, world);
-    return map.world_to_uvz * glm::dvec4(world, 1.0);
+    return projection_kind(map).homogeneous(map, world);
 }
 
 glm::dvec3 world_to_uvz(const ShadowMap& map, const glm::dvec3& world) {
@@ -90,8 +67,8 @@ glm::dvec3 world_to_uvz(const ShadowMap& map, const glm::dvec3& world) {
 }
 
 double hemisphere_side(const ShadowMap& map, const glm::dvec3& world) {
-    if (map.projection != Projection::paraboloid) return 1.0;
-    return (map.paraboloid.frame_from_world * (world - map.paraboloid.centre)).z;
+    const ProjectionKind& kind = projection_kind(map);
+    return kind.clip_distance ? kind.clip_distance(map, world) : 1.0;
 }
 
 int select_map(const ShadowSetup& setup, const glm::dvec3& world) {
@@ -165,16 +142,7 @@ std::optional<MapLookup> look_up_in(const ShadowSetup& setup, int map, const glm
 }
 
 glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::dvec3& direction) {
-    if (map.projection == Projection::paraboloid) {
-        const double step = 1e-6 * glm::length(p - map.paraboloid.centre);
-        return (glm::dvec2(world_to_uvz(map, p + step * direction)) -
-                glm::dvec2(world_to_uvz(map, p - step * direction))) /
-               (2.0 * step);
-    }
-    // (u, v) = h.xy / h.w with h = M (p, 1); along the direction h changes by M (direction, 0).
-    const glm::dvec4 h = map.world_to_uvz * glm::dvec4(p, 1.0);
-    const glm::dvec4 dh = map.world_to_uvz * glm::dvec4(direction, 0.0);
-    return (glm::dvec2(dh) * h.w - glm::dvec2(h) * dh.w) / (h.w * h.w);
+    return projection_kind(map).uv_derivative(map, p, direction);
 }
 
 ShadowSetup relative_to(ShadowSetup setup, const glm::dvec3& origin) {
@@ -190,28 +158,11 @@ ShadowSetup relative_to(ShadowSetup setup, const glm::dvec3& origin) {
 }
 
 double depth_slope(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {
-    if (map.projection == Projection::paraboloid) {  // d = (|q| - near) / (far - near)
-        const Paraboloid& pb = map.paraboloid;
-        const glm::dvec3 q = pb.frame_from_world * (p - pb.centre);
-        return glm::dot(glm::normalize(q), pb.frame_from_world * l) / (pb.far - pb.near);
-    }
-    const glm::dmat4& m = map.world_to_uvz;
-    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
-    const double a = glm::dot(glm::dvec3(m[0][2], m[1][2], m[2][2]), l);  // d_pre's slope along l
-    const double c = glm::dot(glm::dvec3(m[0][3], m[1][3], m[2][3]), l);  // w's slope along l
-    return (a * h.w - h.z * c) / (h.w * h.w);                             // the quotient rule on d_pre / w
+    return projection_kind(map).depth_slope(map, l, p);
 }
 
 double distance_back_to_depth(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p, double depth) {
-    if (map.projection == Projection::paraboloid) {  // back along a radial ray, d falls by 1 / (far - near) per unit
-        const double d = world_to_uvz(map, p).z;
-        return (d - depth) * (map.paraboloid.far - map.paraboloid.near);
-    }
-    // At p - s l the map holds (h.z - s dh.z) / (h.w - s dh.w); set it to `depth` and solve for s.
-    const glm::dvec4 h = map.world_to_uvz * glm::dvec4(p, 1.0);
-    const glm::dvec4 dh = map.world_to_uvz * glm::dvec4(l, 0.0);
-    const double s = (h.z - depth * h.w) / (dh.z - depth * dh.w);
-    return std::isfinite(s) && s >= 0.0 ? s : INFINITY;
+    return projection_kind(map).distance_back_to_depth(map, l, p, depth);
 }
 
 double world_per_depth_unit(const ShadowMap& map, const glm::dvec3& l, const glm::dvec3& p) {

@@ -17,8 +17,8 @@ glm::dvec4 map_homogeneous(const ShadowMap& map, const glm::dvec3& world);
 // (u, v, d) of a world point under one map, after the division by w.
 glm::dvec3 world_to_uvz(const ShadowMap& map, const glm::dvec3& world);
 
-// The signed distance of a world point to a paraboloid map's hemisphere plane (>= 0: its side);
-// +1 for the other projections, which have no such plane.
+// The signed distance of a world point to the plane the map's kind clips its casters at (>= 0: its
+// side; a paraboloid's hemisphere plane, ProjectionKind::clip_distance); +1 for kinds with no such plane.
 double hemisphere_side(const ShadowMap& map, const glm::dvec3& world);
 
 // The index of the map the setup's selection rule gives the point, or -1 when none does (lit).
@@ -35,8 +35,9 @@ struct MapBlend {
 };
 MapBlend blend_of(const ShadowSetup& setup, const glm::dvec3& world);
 
-// The world region a linear map or cube face covers: its unit cube [0,1]^3 taken back through
-// world_to_uvz (near face d = 0 first). A paraboloid has no such box.
+// The world region a map of a projective kind (ProjectionKind::projective: a linear map, a cube face)
+// covers: its unit cube [0,1]^3 taken back through world_to_uvz (near face d = 0 first). Other kinds
+// have no such box.
 Frustum map_volume(const ShadowMap& map);
 
 // Map texels per side of one map's tile in a texture of `texture_resolution` texels per side.
@@ -68,9 +69,9 @@ std::optional<MapLookup> look_up(const ShadowSetup& setup, const glm::dvec3& wor
 // The same under a given map of the setup (a blend's next map); nullopt for map -1.
 std::optional<MapLookup> look_up_in(const ShadowSetup& setup, int map, const glm::dvec3& world, double bias);
 
-// How (u, v) moves per world unit along `direction` at p under one map: exact for linear maps and
-// cube faces (the quotient rule on the matrix rows), a central difference sized by the distance to
-// the centre for a paraboloid; no step tied to the scene's extent or position.
+// How (u, v) moves per world unit along `direction` at p under one map, by its kind: exact for linear
+// maps and cube faces (the quotient rule on the matrix rows), a central difference sized by the
+// distance to the centre for a paraboloid; no step tied to the scene's extent or position.
 glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::dvec3& direction);
 
 // The same setup for points given relative to `origin` (p - origin): what a float32 consumer (the GPU

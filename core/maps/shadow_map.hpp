@@ -9,12 +9,14 @@
 
 namespace shadowlab {
 
+// The projection kinds, each described once by its ProjectionKind (maps/projection_kind.hpp,
+// registered in maps/projection_kinds.cpp), through which every reader goes.
 enum class Projection {
     linear,      // a 4x4, world (x, y, z, 1) -> (u w, v w, d_pre, w): orthographic, perspective and warped maps
     paraboloid,  // one hemisphere of a dual-paraboloid map (Brabec, Annen and Seidel 2002)
     cube_face,   // one 90° face of a cube map: a linear 4x4, picked by the major axis of p - centre
 };
-const char* to_string(Projection projection);
+const char* to_string(Projection projection);  // its kind's name
 
 // A paraboloid hemisphere: a world point p seen from `centre` in the hemisphere's frame, q =
 // frame_from_world (p - centre), d = q / |q|, maps to (u, v) = ((d.x, d.y) / (1 + d.z) + 1) / 2 and

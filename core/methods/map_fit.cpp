@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "maps/projection_kind.hpp"
 #include "methods/light_fit.hpp"
 #include "methods/step_figures.hpp"
 
@@ -89,12 +90,9 @@ void record_output(const ShadowSetup& setup, const std::vector<glm::dvec3>& cove
                                .value("world_to_uvz", map.world_to_uvz)
                                .value("z_bias_scale", map.z_bias_scale)
                                .shape("covered_points", PointSet{covered}, Role::focus);
-            if (map.projection == Projection::paraboloid) continue;
-            const glm::dmat4 world_from_uvz = glm::inverse(map.world_to_uvz);
-            const auto ws = [&](const glm::dvec3& uvz) {
-                const glm::dvec4 h = world_from_uvz * glm::dvec4(uvz, 1.0);
-                return glm::dvec3(h) / h.w;
-            };
+            const ProjectionKind& kind = projection_kind(map);
+            if (!kind.projective()) continue;  // its axes bend: no straight arrows
+            const auto ws = [&](const glm::dvec3& uvz) { return kind.world_of(map, uvz); };
             const glm::dvec3 ws_origin = ws(glm::dvec3(0.0));
             for (const auto& [name, axis] : {std::pair{"u", glm::dvec3(1, 0, 0)}, std::pair{"v", glm::dvec3(0, 1, 0)},
                                              std::pair{"d", glm::dvec3(0, 0, 1)}})

@@ -6,6 +6,7 @@
 #include "geometry/homogeneous_clip.hpp"
 #include "math/parallel_rows.hpp"
 #include "maps/map_lookup.hpp"
+#include "maps/projection_kind.hpp"
 #include "raster/paraboloid_edges.hpp"
 
 #include <algorithm>
@@ -65,18 +66,20 @@ Clipping clipping_of(const std::array<glm::dvec4, 3>& triangle) {
 }
 
 // Every vertex under the map, projected once for all the triangles that share it: homogeneous
-// (u, v, d_pre, w) and the side of a paraboloid's plane (1 for other maps).
+// (u, v, d_pre, w) and its kind's clip distance (1 for a kind that clips at no plane). The kind is
+// resolved once for the map.
 struct MapVertices {
     std::vector<glm::dvec4> homogeneous;
     std::vector<double> side;
 };
 
 MapVertices map_vertices(const std::vector<glm::dvec3>& world, const ShadowMap& map) {
-    MapVertices out{.homogeneous = std::vector<glm::dvec4>(world.size()), .side = std::vector<double>(world.size())};
-    for (std::size_t i = 0; i < world.size(); ++i) {
-        out.homogeneous[i] = map_homogeneous(map, world[i]);
-        out.side[i] = hemisphere_side(map, world[i]);
-    }
+    const ProjectionKind& kind = projection_kind(map);
+    MapVertices out{.homogeneous = std::vector<glm::dvec4>(world.size()),
+                    .side = std::vector<double>(world.size(), 1.0)};
+    for (std::size_t i = 0; i < world.size(); ++i) out.homogeneous[i] = kind.homogeneous(map, world[i]);
+    if (kind.clip_distance)
+        for (std::size_t i = 0; i < world.size(); ++i) out.side[i] = kind.clip_distance(map, world[i]);
     return out;
 }
 
@@ -94,9 +97,9 @@ ScreenVertex to_screen(const glm::dvec4& h, const ShadowMap& map, int resolution
     return {texture_uv(map, glm::dvec2(h.x, h.y) / h.w) * static_cast<double>(resolution), h.z / h.w};
 }
 
-// Appends the part of one caster triangle on the map, as a fan of screen triangles. A paraboloid map
-// first cuts it at its hemisphere's plane, where the plane distance interpolated along the projected
-// edges crosses 0 (as gl_ClipDistance does). Most triangles are wholly on the map or wholly off it
+// Appends the part of one caster triangle on the map, as a fan of screen triangles. A kind with a clip
+// distance (a paraboloid's hemisphere plane) first cuts it where that distance, interpolated along the
+// projected edges, crosses 0 (as gl_ClipDistance does). Most triangles are wholly on the map or wholly off it
 // and pass without a polygon.
 void add_on_map(const std::array<int, 3>& corners, const MapVertices& vertices, const ShadowMap& map, int resolution,
                 std::vector<ScreenTriangle>& out) {

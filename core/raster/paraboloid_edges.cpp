@@ -1,8 +1,5 @@
-// The sagitta in closed form: a straight edge and the map's centre span a plane through the centre,
-// whose great circle the paraboloid (a stereographic projection from the back pole) maps to a circle
-// of the disc; the edge's image is an arc of it. Exact, where sampling points along the edge would
-// only approach the arc's farthest point from below; the test samples the edge finely and finds the
-// same value.
+// Splitting a caster mesh until its straight edges follow the curved images its map's kind draws
+// of them: each edge is halved by its own sagitta, so the triangles on either side agree on it.
 #include "raster/paraboloid_edges.hpp"
 
 #include <algorithm>
@@ -10,11 +7,12 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
-#include <tuple>
+#include <string>
 #include <unordered_map>
 #include <utility>
 
 #include "maps/map_lookup.hpp"
+#include "maps/projection_kind.hpp"
 
 namespace shadowlab {
 namespace {
@@ -27,71 +25,39 @@ namespace {
 // is short; the limit ends that too.
 constexpr int kMaxSplitDepth = 8;
 
-// 1 + d.z at or below this: the back pole, where the disc coordinates leave every bound (the lookup's
-// own threshold, maps/map_lookup.cpp).
-constexpr double kSingular = 1e-12;
+// The split of one map: its kind's sagitta, resolved once, and the target in units of the map's (u, v).
+struct SplitRule {
+    const ShadowMap& map;
+    double (*sagitta)(const ShadowMap&, const glm::dvec3&, const glm::dvec3&);
+    double max_sagitta;
+};
 
-glm::dvec3 in_frame(const Paraboloid& p, const glm::dvec3& world) { return p.frame_from_world * (world - p.centre); }
-
-glm::dvec2 disc_at(const glm::dvec3& q) { return disc_of(glm::normalize(q)); }
-
-bool lexicographically_less(const glm::dvec3& a, const glm::dvec3& b) {
-    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-}
-
-// The sagitta of the image of the segment between two frame points on the map's side (z >= 0). With
-// n the unit normal of the plane through the centre and both points, the inverse mapping turns n . d
-// = 0 into x² + y² - 2 (n_x x + n_y y) / n_z - 1 = 0: a circle of radius r = 1 / |n_z| (a line through
-// the disc's centre when n_z = 0). Inside the unit disc the arc is at most a half circle, so a chord of
-// half-length h bows by r - sqrt(r² - h²) = h² / (r + sqrt(r² - h²)), the form that stays exact as r
-// grows without bound.
-double arc_sagitta(const glm::dvec3& qa, const glm::dvec3& qb) {
-    const glm::dvec3 normal = glm::cross(qa, qb);
-    const double length = glm::length(normal);
-    if (!(length > 0.0)) return 0.0;  // on one ray from the centre: a radial segment, straight in the disc
-    const double curvature = std::abs(normal.z) / length;  // 1 / r
-    const double h = glm::distance(disc_at(qa), disc_at(qb)) / 2.0;
-    return h * h * curvature / (1.0 + std::sqrt(std::max(0.0, 1.0 - h * h * curvature * curvature)));
-}
-
-// An edge from `front` (z >= 0) to `back` (z < 0). The rasterizer, like gl_ClipDistance, cuts the
-// drawn chord where z, interpolated along it, is 0: at the fraction t = front.z / (front.z - back.z)
-// of the chord, while the true image ends on the rim at the edge's own point at t. The drawn piece
-// lies within that offset of the chord of the true piece, which lies within its sagitta of the arc.
-double crossing_error(const glm::dvec3& front, const glm::dvec3& back) {
-    const double t = front.z / (front.z - back.z);
-    const glm::dvec3 rim = front + t * (back - front);
-    const glm::dvec3 back_direction = glm::normalize(back);
-    if (!(1.0 + back_direction.z > kSingular)) return INFINITY;  // the drawn chord runs off to infinity
-    if (rim == glm::dvec3(0.0)) return 0.0;                      // the edge passes through the centre
-    const glm::dvec2 drawn_cut = glm::mix(disc_at(front), disc_of(back_direction), t);
-    return arc_sagitta(front, rim) + glm::distance(drawn_cut, disc_at(rim));
+// The rule for a map at a texture resolution; refused unless the kind bends edges and the target and
+// the tile are > 0 (a target of 0 would split every bowed edge down to the depth limit).
+SplitRule split_rule(const ShadowMap& map, int texture_resolution) {
+    const ProjectionKind& kind = projection_kind(map);
+    const double texels_per_unit = tile_resolution(map, texture_resolution);  // the tile spans (u, v) in [0, 1]
+    if (!kind.edge_sagitta || !(map.max_sagitta_texels > 0.0) || !(texels_per_unit > 0.0))
+        throw std::invalid_argument(std::string("caster splitting: a ") + kind.name +
+                                    " map must bend edges and have max_sagitta_texels > 0 and a tile");
+    return {.map = map, .sagitta = kind.edge_sagitta, .max_sagitta = map.max_sagitta_texels / texels_per_unit};
 }
 
 // Whether an edge born `depth` levels down is halved: the one rule for triangles and lone edges alike.
-bool halves(const Paraboloid& paraboloid, const glm::dvec3& a, const glm::dvec3& b, int depth, double max_sagitta) {
-    return depth < kMaxSplitDepth && edge_sagitta(paraboloid, a, b) > max_sagitta;
-}
-
-// The disc units of a target in texels; refused unless both are > 0 (a target of 0 would split every
-// bowed edge down to the depth limit).
-double target_in_disc_units(double texels_per_unit, double max_sagitta_texels) {
-    if (!(max_sagitta_texels > 0.0) || !(texels_per_unit > 0.0))
-        throw std::invalid_argument(
-            "paraboloid splitting: the target sagitta and the texels per disc unit must be > 0");
-    return max_sagitta_texels / texels_per_unit;
+bool halves(const SplitRule& rule, const glm::dvec3& a, const glm::dvec3& b, int depth) {
+    return depth < kMaxSplitDepth && rule.sagitta(rule.map, a, b) > rule.max_sagitta;
 }
 
 // The points after a along a–b, b last, as split from `depth` levels down. Edges are halved at their
 // world midpoint. Halving the angle instead (the point whose direction bisects it) leaves fewer
 // pieces, 7 % fewer in the lamp room, but coarser far from the light, where the depth, interpolated
 // linearly across the disc, strays most: 2.4 to 3.3 times the texels off by a hundredth of the range.
-void append_split(const Paraboloid& paraboloid, const glm::dvec3& a, const glm::dvec3& b, int depth, double max_sagitta,
+void append_split(const SplitRule& rule, const glm::dvec3& a, const glm::dvec3& b, int depth,
                   std::vector<glm::dvec3>& points) {
-    if (halves(paraboloid, a, b, depth, max_sagitta)) {
+    if (halves(rule, a, b, depth)) {
         const glm::dvec3 middle = (a + b) / 2.0;
-        append_split(paraboloid, a, middle, depth + 1, max_sagitta, points);
-        append_split(paraboloid, middle, b, depth + 1, max_sagitta, points);
+        append_split(rule, a, middle, depth + 1, points);
+        append_split(rule, middle, b, depth + 1, points);
     } else
         points.push_back(b);
 }
@@ -102,10 +68,7 @@ void append_split(const Paraboloid& paraboloid, const glm::dvec3& a, const glm::
 // one triangle), so the limit stops it on both sides alike; an edge left whole is never halved later.
 class Splitter {
 public:
-    Splitter(const std::vector<glm::dvec3>& vertices, const Paraboloid& paraboloid, double max_sagitta)
-        : paraboloid_(paraboloid), max_sagitta_(max_sagitta) {
-        out_.vertices = vertices;
-    }
+    Splitter(const std::vector<glm::dvec3>& vertices, const SplitRule& rule) : rule_(rule) { out_.vertices = vertices; }
 
     // Edge k of a triangle runs from its vertex k to vertex k + 1. The triangle is turned so that its
     // split edges come first, then cut into 2 (one split edge: midpoint to the opposite corner), 3 (two:
@@ -113,8 +76,7 @@ public:
     // midpoint subdivision), each split again one level deeper.
     void split(const std::array<int, 3>& t, int object, int depth) {
         std::array<bool, 3> halved;
-        for (int k = 0; k < 3; ++k)
-            halved[k] = halves(paraboloid_, vertex(t[k]), vertex(t[(k + 1) % 3]), depth, max_sagitta_);
+        for (int k = 0; k < 3; ++k) halved[k] = halves(rule_, vertex(t[k]), vertex(t[(k + 1) % 3]), depth);
         const int count = int(std::count(halved.begin(), halved.end(), true));
         if (count == 0) {
             out_.triangles.push_back(t);
@@ -165,65 +127,37 @@ private:
         return at->second;
     }
 
-    const Paraboloid& paraboloid_;
-    double max_sagitta_;  // disc units
+    SplitRule rule_;
     WorldTriangles out_;
     std::unordered_map<std::uint64_t, int> midpoints_;
 };
 
 }  // namespace
 
-glm::dvec2 disc_of(const glm::dvec3& direction) { return glm::dvec2(direction) / (1.0 + direction.z); }
-
-glm::dvec3 direction_of(const glm::dvec2& disc) {
-    const double rho2 = glm::dot(disc, disc);
-    return glm::dvec3(2.0 * disc, 1.0 - rho2) / (1.0 + rho2);
-}
-
 double texels_per_disc_unit(const ShadowMap& map, int texture_resolution) {
     return tile_resolution(map, texture_resolution) / 2.0;
 }
 
-double edge_sagitta(const Paraboloid& paraboloid, const glm::dvec3& a, const glm::dvec3& b) {
-    if (lexicographically_less(b, a)) return edge_sagitta(paraboloid, b, a);  // one order: the same bits
-    const glm::dvec3 qa = in_frame(paraboloid, a), qb = in_frame(paraboloid, b);
-    if (qa == glm::dvec3(0.0) || qb == glm::dvec3(0.0)) return 0.0;  // an end at the centre has no image
-    const bool a_in_front = qa.z >= 0.0, b_in_front = qb.z >= 0.0;   // as hemisphere_side >= 0 keeps them
-    if (a_in_front && b_in_front) return arc_sagitta(qa, qb);
-    if (a_in_front) return crossing_error(qa, qb);
-    if (b_in_front) return crossing_error(qb, qa);
-    return 0.0;  // behind the plane: clipped away, nothing drawn
+double edge_sagitta_texels(const ShadowMap& map, const glm::dvec3& a, const glm::dvec3& b, int texture_resolution) {
+    const ProjectionKind& kind = projection_kind(map);
+    return kind.edge_sagitta ? kind.edge_sagitta(map, a, b) * tile_resolution(map, texture_resolution) : 0.0;
 }
 
-WorldTriangles split_for_paraboloid(const WorldTriangles& triangles, const Paraboloid& paraboloid,
-                                    double texels_per_unit, double max_sagitta_texels) {
-    Splitter splitter(triangles.vertices, paraboloid, target_in_disc_units(texels_per_unit, max_sagitta_texels));
-    for (std::size_t i = 0; i < triangles.triangles.size(); ++i)
-        splitter.split(triangles.triangles[i], triangles.object[i], 0);
-    return std::move(splitter).result();
-}
-
-std::vector<glm::dvec3> split_edge(const Paraboloid& paraboloid, const glm::dvec3& a, const glm::dvec3& b,
-                                   double texels_per_unit, double max_sagitta_texels) {
-    std::vector<glm::dvec3> points{a};
-    append_split(paraboloid, a, b, 0, target_in_disc_units(texels_per_unit, max_sagitta_texels), points);
-    return points;
-}
-
-bool splits_casters(const ShadowMap& map) {
-    return map.projection == Projection::paraboloid && map.max_sagitta_texels > 0.0;
-}
+bool splits_casters(const ShadowMap& map) { return projection_kind(map).edge_sagitta && map.max_sagitta_texels > 0.0; }
 
 WorldTriangles split_casters(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
                              const ShadowMap& map, int texture_resolution) {
-    WorldTriangles casters{.vertices = triangles.vertices};
+    Splitter splitter(triangles.vertices, split_rule(map, texture_resolution));
     for (std::size_t i = 0; i < triangles.triangles.size(); ++i)
-        if (casts_per_object.at(triangles.object[i])) {
-            casters.triangles.push_back(triangles.triangles[i]);
-            casters.object.push_back(triangles.object[i]);
-        }
-    return split_for_paraboloid(casters, map.paraboloid, texels_per_disc_unit(map, texture_resolution),
-                                map.max_sagitta_texels);
+        if (casts_per_object.at(triangles.object[i])) splitter.split(triangles.triangles[i], triangles.object[i], 0);
+    return std::move(splitter).result();
+}
+
+std::vector<glm::dvec3> split_edge(const ShadowMap& map, const glm::dvec3& a, const glm::dvec3& b,
+                                   int texture_resolution) {
+    std::vector<glm::dvec3> points{a};
+    append_split(split_rule(map, texture_resolution), a, b, 0, points);
+    return points;
 }
 
 }  // namespace shadowlab

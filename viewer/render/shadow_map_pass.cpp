@@ -26,8 +26,10 @@
 
 #include "lookup/kernel_taps.hpp"
 #include "lookup/shadow_reader.hpp"
+#include "maps/projection_kind.hpp"
 #include "raster/paraboloid_edges.hpp"
 #include "render/glsl_source.hpp"
+#include "render/projection_glsl.hpp"
 #include "render/program_uniforms.hpp"
 #include "render/surface_shading.hpp"
 
@@ -225,7 +227,7 @@ std::string glsl_int_constant(const char* name, Value value) {
 }
 
 // The constants the shaders share with C++, written from it so that neither side can drift: the
-// arrays' sizes, the values of Projection, MapSelection::Rule and MapOverlay, the
+// arrays' sizes, the values of MapSelection::Rule and MapOverlay, the
 // overlay's strength and range, and PCSS's search limit.
 std::string glsl_constants() {
     const auto constant = [](const char* name, auto value) { return glsl_int_constant(name, value); };
@@ -235,8 +237,7 @@ std::string glsl_constants() {
     using Rule = MapSelection::Rule;
     return constant("shadowMaxMaps", kMaxMaps) + constant("shadowMaxRampStops", ShadowMapPass::kMaxRampStops) +
            constant("shadowMaxTaps", ShadowMapPass::kMaxTaps) +
-           real("shadowMaxSearchTexels", ShadowReader::kMaxSearchTexels) +
-           constant("shadowParaboloid", Projection::paraboloid) + constant("shadowRuleOnly", Rule::only) +
+           real("shadowMaxSearchTexels", ShadowReader::kMaxSearchTexels) + constant("shadowRuleOnly", Rule::only) +
            constant("shadowRuleViewDepth", Rule::view_depth) + constant("shadowRuleTileBounds", Rule::tile_bounds) +
            constant("shadowRuleCubeFace", Rule::cube_face) + constant("shadowRuleHemisphere", Rule::hemisphere) +
            constant("shadowOverlayNone", MapOverlay::none) +
@@ -428,8 +429,8 @@ void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenG
     if (tile.width <= 0 || tile.height <= 0) return;  // a tile without texels: nothing to draw
     gl->vtkglScissor(tile.x, tile.y, tile.width, tile.height);
     drawn_map_ = map;
-    const bool paraboloid = setup_.maps[map].projection == Projection::paraboloid;
-    if (paraboloid) glEnable(GL_CLIP_DISTANCE0);  // behind the hemisphere: cut, as the CPU rasterizer does
+    const bool clips = projection_kind(setup_.maps[map]).clip_distance != nullptr;
+    if (clips) glEnable(GL_CLIP_DISTANCE0);  // behind its plane (a hemisphere's): cut, as the CPU rasterizer does
     if (vtkProp* split = split_casters_[map]) {
         vtkRenderState split_state(depth_state->GetRenderer());
         split_state.SetPropArrayAndCount(&split, 1);
@@ -439,7 +440,7 @@ void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenG
         PostRender(&split_state);
     } else
         depth_pass_->Render(depth_state);
-    if (paraboloid) glDisable(GL_CLIP_DISTANCE0);
+    if (clips) glDisable(GL_CLIP_DISTANCE0);
 }
 
 // Stage 2: the scene, each fragment looked up in its map.
@@ -458,7 +459,7 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
 
 bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment, vtkAbstractMapper*,
                                            vtkProp*) {
-    const std::string projection = glsl_constants() + glsl("map_projection");
+    const std::string projection = glsl_constants() + glsl("map_projection") + projection_glsl();
     if (stage_ == Stage::depth) {
         vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
                                      "//VTK::PositionVC::Dec\n" + projection + glsl("caster_depth"), false);

@@ -23,6 +23,7 @@
 
 #include "lookup/moment_map.hpp"
 #include "maps/map_lookup.hpp"
+#include "maps/projection_kind.hpp"
 #include "methods/cascade_atlas.hpp"
 #include "raster/paraboloid_edges.hpp"
 #include "views/colour_bar.hpp"
@@ -160,11 +161,11 @@ void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
             d(tile.min.x, tile.max.y, 0.6);
         for (const auto& edge : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}})
             edges.push_back(edge);
-        if (setup.maps[i].projection == Projection::paraboloid) add_disc_rim(tile, edges);
+        const bool disc = projection_kind(setup.maps[i]).fills_disc;
+        if (disc) add_disc_rim(tile, edges);
         const auto side = static_cast<int>(std::lround(tile_resolution(setup.maps[i], n)));
         const std::string text = map_name(setup, i) + "\n" + std::to_string(side) + "²";
-        if (setup.maps[i].projection ==
-            Projection::paraboloid)  // in the corner the disc leaves empty, under the legend
+        if (disc)  // in the corner the disc leaves empty, under the legend
             add_world_label(renderer, a, text, 14, kTileBorder, {6, 6});
         else
             add_world_label(renderer, d, text, 14, kTileBorder, {6, -40});  // inside the tile, below its top edge
@@ -188,21 +189,19 @@ bool behind(const ShadowMap& map, const glm::dvec3& a, const glm::dvec3& b) {
 
 // The edges a map draws in the place of one: the edge itself, or its pieces on the map's side where
 // the map splits.
-std::vector<SeenEdge> drawn_pieces(const ShadowMap& map, const SeenEdge& e, double texels_per_unit) {
+std::vector<SeenEdge> drawn_pieces(const ShadowMap& map, const SeenEdge& e, int resolution) {
     if (!splits_casters(map)) return {e};
-    const std::vector<glm::dvec3> points =
-        split_edge(map.paraboloid, e.a, e.b, texels_per_unit, map.max_sagitta_texels);
+    const std::vector<glm::dvec3> points = split_edge(map, e.a, e.b, resolution);
     std::vector<SeenEdge> pieces;
     for (size_t k = 0; k + 1 < points.size(); ++k)
         if (!behind(map, points[k], points[k + 1]))
             pieces.push_back(
-                {points[k], points[k + 1], edge_sagitta(map.paraboloid, points[k], points[k + 1]) * texels_per_unit});
+                {points[k], points[k + 1], edge_sagitta_texels(map, points[k], points[k + 1], resolution)});
     return pieces;
 }
 
 // Per caster object, its edges (each once) with some part on the map's side of its plane.
 std::map<int, std::vector<SeenEdge>> seen_edges_by_object(const Inspection& in, const ShadowMap& map) {
-    const double texels_per_unit = texels_per_disc_unit(map, in.resolution);
     const WorldTriangles& t = in.triangles;
     std::set<std::pair<int, int>> done;
     std::map<int, std::vector<SeenEdge>> edges;
@@ -212,7 +211,7 @@ std::map<int, std::vector<SeenEdge>> seen_edges_by_object(const Inspection& in, 
             const auto [first, second] = std::minmax(t.triangles[i][k], t.triangles[i][(k + 1) % 3]);
             const glm::dvec3 &a = t.vertices[first], &b = t.vertices[second];
             if (!done.insert({first, second}).second || behind(map, a, b)) continue;
-            edges[t.object[i]].push_back({a, b, edge_sagitta(map.paraboloid, a, b) * texels_per_unit});
+            edges[t.object[i]].push_back({a, b, edge_sagitta_texels(map, a, b, in.resolution)});
         }
     }
     return edges;
@@ -271,7 +270,7 @@ std::string draw_tessellation_error(vtkRenderer* renderer, const Inspection& in,
     std::vector<std::pair<glm::dvec3, glm::dvec3>> chords, arcs;
     std::vector<SeenEdge> drawn;
     for (const SeenEdge& e : worst_edges) {
-        for (const SeenEdge& piece : drawn_pieces(map, e, texels_per_disc_unit(map, in.resolution))) {
+        for (const SeenEdge& piece : drawn_pieces(map, e, in.resolution)) {
             chords.push_back(drawn_chord(map, piece, in.resolution));
             drawn.push_back(piece);
         }
@@ -335,9 +334,9 @@ ShownTexture shown_texture(const Inspection& in, const DepthMap& stored_texture,
     return {stored_texture, in.setup};
 }
 
-bool any_paraboloid(const ShadowSetup& setup) {
+bool any_bends_edges(const ShadowSetup& setup) {
     return std::any_of(setup.maps.begin(), setup.maps.end(),
-                       [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
+                       [](const ShadowMap& m) { return !projection_kind(m).projective(); });
 }
 
 // What the view paints, and its words for the caption after the method's name (none for the depth).
@@ -381,7 +380,7 @@ PaintedTexture painted_moments(vtkRenderer* renderer, const Inspection& in, Text
                               .ticks = {"0", middle, top},
                               .low_side = "one depth\nunder the blur",
                               .high_side = "depths differ:\nlight may bleed",
-                              .title = any_paraboloid(in.setup)  // its legend takes the title's row
+                              .title = any_bends_edges(in.setup)  // its legend takes the title's row
                                            ? ""
                                            : "standard deviation " + deviation + ", in depth units"});
     RgbImage image = deviation_to_heat(shown.texture, largest);
@@ -412,8 +411,9 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
     show_image(renderer, painted.image);
     for (size_t i = 0; i < shown.setup.maps.size(); ++i) {  // the camera frustum where each linear map puts it
         const ShadowMap& map = shown.setup.maps[i];
-        if (map.projection == Projection::paraboloid) {
-            report.notes.push_back("the camera frustum is not drawn on a paraboloid map (its edges bend)");
+        if (!projection_kind(map).projective()) {
+            report.notes.push_back(std::string("the camera frustum is not drawn on a ") + projection_kind(map).name +
+                                   " map (its edges bend)");
             report.notes.push_back(draw_tessellation_error(renderer, in, i));
             sagittas += "\n" + report.notes.back();
             continue;
@@ -426,7 +426,7 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
         renderer->AddActor(frustum);
     }
     if (shown.setup.maps.size() > 1) draw_tiles(renderer, shown.setup, n);
-    if (any_paraboloid(in.setup))
+    if (any_bends_edges(in.setup))
         add_legend(renderer, {{kChordColour, "an edge as a GPU draws it (projected ends joined straight)"},
                               {kArcColour, "the same edge as the map sees it (its true arc)"}});
     vtkNew<TexelGridToggle> toggle;
@@ -440,8 +440,8 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
                            : "";
     const std::string words = painted.caption.empty() ? "" : ": " + painted.caption;
     const char* frustum_words = painted.on_heat_ramp ? "camera frustum in blue; " : "camera frustum in yellow; ";
-    const bool linear_maps = !std::all_of(in.setup.maps.begin(), in.setup.maps.end(),
-                                          [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
+    const bool linear_maps = std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
+                                         [](const ShadowMap& m) { return projection_kind(m).projective(); });
     add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + words + maps + cross +
                               " (" + (linear_maps ? frustum_words : "") +
                               (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +

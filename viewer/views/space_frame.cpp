@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "maps/projection_kind.hpp"
 #include "views/space_parts.hpp"
 
 namespace shadowlab {
@@ -65,7 +66,7 @@ std::vector<glm::dvec3> world_points(const Inspection& in) {
 std::vector<glm::dvec3> map_volume_corners(const ShadowSetup& setup) {
     std::vector<glm::dvec3> corners;
     for (const ShadowMap& map : setup.maps)
-        if (map.projection != Projection::paraboloid)
+        if (projection_kind(map).projective())
             for (const glm::dvec3& c : map_volume(map).corners) corners.push_back(c);
     return corners;
 }
@@ -164,7 +165,7 @@ Placement SpaceFrame::placement_from(const glm::dmat4& shape_from_world) const {
 bool unit_space_is_an_atlas(const Inspection& in, Space space) {
     return space == Space::unit && in.has_map() &&
            std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
-                       [](const ShadowMap& m) { return m.projection == Projection::paraboloid; });
+                       [](const ShadowMap& m) { return !projection_kind(m).projective(); });
 }
 
 std::optional<SpaceFrame> space_frame(const Inspection& in, Space space, const Step* chosen) {

@@ -10,6 +10,7 @@
 #include <vtkRenderer.h>
 
 #include "io/value_text.hpp"
+#include "maps/projection_kind.hpp"
 #include "views/space_parts.hpp"
 
 namespace shadowlab {
@@ -48,8 +49,9 @@ void draw_map_volumes(SpaceCanvas& canvas, const ShadowSetup& setup, ViewReport&
     const Placement placement = canvas.frame().placement_from(glm::dmat4(1.0));
     const RoleStyle& map = role_style(Role::map);
     for (const ShadowMap& m : setup.maps) {
-        if (m.projection == Projection::paraboloid) {
-            report.notes.push_back("a paraboloid map has no box-shaped volume: not drawn");
+        if (!projection_kind(m).projective()) {
+            report.notes.push_back(std::string("a ") + projection_kind(m).name +
+                                   " map has no box-shaped volume: not drawn");
             continue;
         }
         const Frustum volume = map_volume(m);

@@ -20,6 +20,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "maps/map_lookup.hpp"
+#include "maps/projection_kind.hpp"
 #include "raster/depth_map.hpp"
 #include "render/map_overlay.hpp"
 #include "views/space_parts.hpp"
@@ -108,7 +109,7 @@ WorldTexel world_texel(const DepthMap& depth, const ShadowMap& map, int index, c
 template <class Visit>
 void for_each_surface_texel(const ShadowSetup& setup, const DepthMap& depth, int stride, Visit&& visit) {
     for (size_t i = 0; i < setup.maps.size(); ++i) {
-        if (setup.maps[i].projection == Projection::paraboloid) continue;
+        if (!projection_kind(setup.maps[i]).projective()) continue;
         const TileTexels tile = tile_texels(setup.maps[i], depth.resolution);
         for (int y = tile.first.y; y < tile.end.y; y += stride)
             for (int x = tile.first.x; x < tile.end.x; x += stride)
@@ -256,9 +257,11 @@ ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in, const 
         return {};
     }
     ViewReport report;
-    if (std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
-                    [](const ShadowMap& m) { return m.projection == Projection::paraboloid; }))
-        report.notes.push_back("paraboloid maps are not back-projected (their texels' edges bend)");
+    if (const auto bent = std::find_if(in.setup.maps.begin(), in.setup.maps.end(),
+                                       [](const ShadowMap& m) { return !projection_kind(m).projective(); });
+        bent != in.setup.maps.end())
+        report.notes.push_back(std::string(projection_kind(*bent).name) +
+                               " maps are not back-projected (their texels' edges bend)");
 
     const DepthMap& surfaces = in.surface_depth();
     const int stride = texel_stride(in.setup, surfaces, kMostQuads);

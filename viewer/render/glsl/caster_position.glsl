@@ -2,8 +2,8 @@
   // (u, v) placed in its tile as texture_uv places it, before the division and unrounded (a viewport
   // on the tile would round its edges to whole texels and shift the map against the CPU
   // rasterizer's by up to a texel), then in OpenGL clip space (x' = 2x - w, the same for y and z);
-  // and the distance to its hemisphere plane, which clips a paraboloid's casters where the CPU
-  // rasterizer cuts them (GL_CLIP_DISTANCE0 is on for paraboloids only).
+  // and its kind's clip distance (a paraboloid's hemisphere plane), which clips the casters where the
+  // CPU rasterizer cuts them (GL_CLIP_DISTANCE0 is on for kinds with a clip distance only).
   vec4 shadowH = shadowHomogeneous(shadowDrawnMap, vertexMC.xyz);
   vec4 shadowTile = shadowDrawnViewport;
   vec2 shadowInTexture = shadowTile.xy * shadowH.w + shadowH.xy * (shadowTile.zw - shadowTile.xy);

@@ -1,5 +1,5 @@
-// Stage 2, after the projections: select_map, blend_of, texel_of, uv_derivative, depth_slope and
-// distance_back_to_depth (maps/map_lookup.cpp) line by line.
+// Stage 2, after the projections: select_map, blend_of and texel_of (maps/map_lookup.cpp) line by
+// line; uv_derivative, depth_slope and distance_back_to_depth are the kinds' (map_projection.glsl).
 uniform int shadowMapCount;
 uniform int shadowMapCubeFace[shadowMaxMaps];
 uniform vec4 shadowMapViewport[shadowMaxMaps];    // (u0, v0, u1, v1): the tile in the texture
@@ -65,36 +65,4 @@ ivec2 shadowTexelOf(int i, vec2 uv) {
 }
 float shadowTileResolution(int i) {
   return (shadowMapViewport[i].z - shadowMapViewport[i].x) * float(shadowResolution);
-}
-vec2 shadowUv(int i, vec3 p) { vec4 h = shadowHomogeneous(i, p); return h.xy / h.w; }
-// uv_derivative: the quotient rule on a linear map's rows; a central difference for a paraboloid.
-vec2 shadowUvDerivative(int i, vec3 p, vec3 direction) {
-  if (shadowMapProjection[i] == shadowParaboloid) {
-    float step = 1e-3 * length(p - shadowMapParaboloidCentre[i]);  // float32: a coarser step than the CPU's
-    return (shadowUv(i, p + step * direction) - shadowUv(i, p - step * direction)) / (2.0 * step);
-  }
-  vec4 h = shadowMapWorldToUvz[i] * vec4(p, 1.0), dh = shadowMapWorldToUvz[i] * vec4(direction, 0.0);
-  return (dh.xy * h.w - h.xy * dh.w) / (h.w * h.w);
-}
-// ∂d/∂t: the depth after the division per world unit along l at p.
-float shadowDepthSlope(int i, vec3 l, vec3 p) {
-  if (shadowMapProjection[i] == shadowParaboloid)  // d = (|q| - near) / (far - near)
-    return dot(normalize(shadowInParaboloidFrame(i, p)), mat3(shadowMapParaboloidFrame[i]) * l) /
-           (shadowMapParaboloidFar[i] - shadowMapParaboloidNear[i]);
-  vec4 h = shadowMapWorldToUvz[i] * vec4(p, 1.0), dh = shadowMapWorldToUvz[i] * vec4(l, 0.0);
-  return (dh.z * h.w - h.z * dh.w) / (h.w * h.w);  // the quotient rule on d_pre / w
-}
-// The shaders' stand-in for the CPU's infinities (float32 holds up to 3.4e38).
-const float shadowUnbounded = 1e30;
-// distance_back_to_depth: how far from p back toward the light the depth falls to `depth`;
-// unbounded where the ray never reaches it.
-float shadowDistanceBackToDepth(int i, vec3 l, vec3 p, float depth) {
-  if (shadowMapProjection[i] == shadowParaboloid) {  // back along a radial ray, d falls by 1 / (far - near) per unit
-    vec4 h = shadowParaboloidHomogeneous(i, p);
-    return (h.z - depth) * (shadowMapParaboloidFar[i] - shadowMapParaboloidNear[i]);
-  }
-  // At p - s l the map holds (h.z - s dh.z) / (h.w - s dh.w); set it to `depth` and solve for s.
-  vec4 h = shadowMapWorldToUvz[i] * vec4(p, 1.0), dh = shadowMapWorldToUvz[i] * vec4(l, 0.0);
-  float s = (h.z - depth * h.w) / (dh.z - depth * dh.w);
-  return !isinf(s) && !isnan(s) && s >= 0.0 ? s : shadowUnbounded;
 }

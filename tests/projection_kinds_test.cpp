@@ -1,0 +1,109 @@
+// Every registered projection kind (maps/projection_kind.hpp) against itself: its inverse undoes its
+// mapping inside the unit cube, the one CPU lookup reads a map exactly through its descriptor, and its
+// derivatives are those of its mapping.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "maps/clip_conventions.hpp"
+#include "maps/map_lookup.hpp"
+#include "maps/projection_kind.hpp"
+
+using namespace shadowlab;
+
+namespace {
+
+const glm::dvec3 kLight{0.0, 5.0, 0.0};
+
+// A map of the kind seen from kLight looking down -y: every kind reads the fields it uses, a 90°
+// perspective world_to_uvz (near 1, far 11) or the paraboloid's frame (+z is world -y), near and far.
+ShadowMap map_of(Projection projection) {
+    const glm::dmat4 clip_from_world = glm::perspective(glm::radians(90.0), 1.0, 1.0, 11.0) *
+                                       glm::lookAt(kLight, glm::dvec3(0.0), glm::dvec3(0, 0, 1));
+    return {
+        .projection = projection,
+        .world_to_uvz = uvz_from_clip({}) * clip_from_world,
+        .paraboloid = {.centre = kLight,
+                       .frame_from_world = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0)),
+                       .near = 1.0,
+                       .far = 11.0}};
+}
+
+// Points of the unit cube's inside, u, v, d in {0.1, 0.3, ..., 0.9}.
+std::vector<glm::dvec3> unit_cube_points() {
+    std::vector<glm::dvec3> points;
+    for (double u = 0.1; u < 1.0; u += 0.2)
+        for (double v = 0.1; v < 1.0; v += 0.2)
+            for (double d = 0.1; d < 1.0; d += 0.2) points.push_back({u, v, d});
+    return points;
+}
+
+glm::dvec3 divided(const glm::dvec4& h) { return glm::dvec3(h) / h.w; }
+
+}  // namespace
+
+TEST(ProjectionKinds, RegisteredOnceByNameAndAnUnregisteredKindIsANamedError) {
+    const std::vector<Projection> kinds = projection_kinds();
+    ASSERT_FALSE(kinds.empty());
+    std::set<std::string> names;
+    for (Projection kind : kinds) {
+        EXPECT_TRUE(names.insert(projection_kind(kind).name).second) << projection_kind(kind).name;
+        EXPECT_EQ(std::string(to_string(kind)), projection_kind(kind).name);
+    }
+    EXPECT_THROW(projection_kind(Projection(int(kinds.size()))), std::invalid_argument);
+}
+
+TEST(ProjectionKinds, TheInverseUndoesTheMappingInsideTheUnitCube) {
+    for (Projection projection : projection_kinds()) {
+        const ShadowMap map = map_of(projection);
+        const ProjectionKind& kind = projection_kind(map);
+        for (const glm::dvec3& uvz : unit_cube_points()) {
+            const glm::dvec3 world = kind.world_of(map, uvz);
+            const glm::dvec4 h = kind.homogeneous(map, world);
+            ASSERT_GT(h.w, 0.0) << kind.name;
+            EXPECT_NEAR(glm::distance(divided(h), uvz), 0.0, 1e-9) << kind.name;
+            EXPECT_NEAR(glm::distance(kind.world_of(map, divided(h)), world), 0.0, 1e-8) << kind.name;
+        }
+    }
+}
+
+// The CPU lookup of a setup of one map: exactly its kind's mapping and clip distance.
+TEST(ProjectionKinds, TheLookupReadsTheMapThroughItsDescriptor) {
+    for (Projection projection : projection_kinds()) {
+        const ShadowSetup setup{.maps = {map_of(projection)}};
+        const ShadowMap& map = setup.maps[0];
+        const ProjectionKind& kind = projection_kind(map);
+        for (const glm::dvec3& uvz : unit_cube_points()) {
+            const glm::dvec3 world = kind.world_of(map, uvz);
+            const glm::dvec4 h = kind.homogeneous(map, world);
+            EXPECT_EQ(map_homogeneous(map, world), h) << kind.name;
+            EXPECT_EQ(hemisphere_side(map, world), kind.clip_distance ? kind.clip_distance(map, world) : 1.0);
+            const std::optional<MapLookup> at = look_up(setup, world, 0.0);
+            ASSERT_TRUE(at) << kind.name << " at " << uvz.x << ", " << uvz.y << ", " << uvz.z;
+            EXPECT_EQ(at->uv, glm::dvec2(h) / h.w) << kind.name;
+            EXPECT_EQ(at->depth, h.z / h.w) << kind.name;
+        }
+    }
+}
+
+// Along the ray from the light through each point: the derivatives match central differences of the
+// mapping, and distance_back_to_depth finds the point 0.3 back toward the light by its depth.
+TEST(ProjectionKinds, TheDerivativesAreThoseOfTheMapping) {
+    constexpr double step = 1e-5, back = 0.3;
+    for (Projection projection : projection_kinds()) {
+        const ShadowMap map = map_of(projection);
+        const ProjectionKind& kind = projection_kind(map);
+        for (const glm::dvec3& uvz : unit_cube_points()) {
+            const glm::dvec3 p = kind.world_of(map, uvz), l = glm::normalize(p - kLight);
+            const glm::dvec3 central =
+                (divided(kind.homogeneous(map, p + step * l)) - divided(kind.homogeneous(map, p - step * l))) /
+                (2.0 * step);
+            EXPECT_NEAR(glm::distance(kind.uv_derivative(map, p, l), glm::dvec2(central)), 0.0, 1e-6) << kind.name;
+            EXPECT_NEAR(kind.depth_slope(map, l, p), central.z, 1e-6) << kind.name;
+            const double depth_back = divided(kind.homogeneous(map, p - back * l)).z;
+            EXPECT_NEAR(kind.distance_back_to_depth(map, l, p, depth_back), back, 1e-9) << kind.name;
+        }
+    }
+}
