@@ -84,7 +84,7 @@ nlohmann::json measured(const std::string& filter) {
 size_t shadowed_pixels(const Inspection& in) {
     ViewOptions options;
     options.lit_mask = true;
-    const RgbImage mask = render_view(in, ViewKind::camera, options, kWidth, kHeight);
+    const RgbImage mask = render_view(in, view_or_throw("camera"), options, kWidth, kHeight);
     size_t black = 0;
     for (int y = 0; y < mask.height; ++y)
         for (int x = 0; x < mask.width; ++x) {
