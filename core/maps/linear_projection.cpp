@@ -39,31 +39,25 @@ double distance_back_to_depth(const ShadowMap& map, const glm::dvec3& l, const g
 
 std::vector<NamedValue> matrix(const ShadowMap& map) { return {{"world_to_uvz", map.world_to_uvz}}; }
 
+// A cube face is a linear map numbered by its face: the same mapping, named apart.
+constexpr ProjectionKind linear_kind(const char* name, bool numbered_face) {
+    return {.name = name,
+            .homogeneous = homogeneous,
+            .world_of = world_of,
+            .clip_distance = nullptr,
+            .edge_sagitta = nullptr,
+            .uv_derivative = uv_derivative,
+            .depth_slope = depth_slope,
+            .distance_back_to_depth = distance_back_to_depth,
+            .parameters = matrix,
+            .numbered_face = numbered_face,
+            .glsl = "linear_projection",
+            .glsl_prefix = "shadowLinear"};
+}
+
 }  // namespace
 
-constinit const ProjectionKind linear_projection{.name = "linear",
-                                                 .homogeneous = homogeneous,
-                                                 .world_of = world_of,
-                                                 .clip_distance = nullptr,
-                                                 .edge_sagitta = nullptr,
-                                                 .uv_derivative = uv_derivative,
-                                                 .depth_slope = depth_slope,
-                                                 .distance_back_to_depth = distance_back_to_depth,
-                                                 .parameters = matrix,
-                                                 .glsl = "linear_projection",
-                                                 .glsl_prefix = "shadowLinear"};
-
-constinit const ProjectionKind cube_face_projection{.name = "cube face",
-                                                    .homogeneous = homogeneous,
-                                                    .world_of = world_of,
-                                                    .clip_distance = nullptr,
-                                                    .edge_sagitta = nullptr,
-                                                    .uv_derivative = uv_derivative,
-                                                    .depth_slope = depth_slope,
-                                                    .distance_back_to_depth = distance_back_to_depth,
-                                                    .parameters = matrix,
-                                                    .numbered_face = true,
-                                                    .glsl = "linear_projection",
-                                                    .glsl_prefix = "shadowLinear"};
+constinit const ProjectionKind linear_projection = linear_kind("linear", false);
+constinit const ProjectionKind cube_face_projection = linear_kind("cube face", true);
 
 }  // namespace shadowlab

@@ -69,21 +69,6 @@ protected:
     }
 };
 
-// What a command prints on stdout.
-template <class Run>
-std::string printed(Run&& run) {
-    std::ostringstream out;
-    std::streambuf* saved = std::cout.rdbuf(out.rdbuf());
-    try {
-        run();
-    } catch (...) {
-        std::cout.rdbuf(saved);
-        throw;
-    }
-    std::cout.rdbuf(saved);
-    return out.str();
-}
-
 nlohmann::json measured(const std::string& scene, const std::string& method, int resolution) {
     return nlohmann::json::parse(printed([&] {
         run_measure({.scene_file = scene,

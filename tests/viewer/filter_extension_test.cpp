@@ -55,19 +55,6 @@ protected:
     }
 };
 
-std::string printed(const std::function<void()>& run) {
-    std::ostringstream out;
-    std::streambuf* saved = std::cout.rdbuf(out.rdbuf());
-    try {
-        run();
-    } catch (...) {
-        std::cout.rdbuf(saved);
-        throw;
-    }
-    std::cout.rdbuf(saved);
-    return out.str();
-}
-
 nlohmann::json measured(const std::string& filter) {
     return nlohmann::json::parse(printed([&] {
         run_measure({.scene_file = scene_file(),

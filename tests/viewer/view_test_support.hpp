@@ -1,6 +1,9 @@
 #pragma once
 // Scenes and pixel checks shared by the viewer's tests.
 #include <cstdint>
+#include <iostream>
+#include <sstream>
+#include <string>
 #include <vector>
 #include <glm/glm.hpp>
 
@@ -112,6 +115,21 @@ inline Agreement gpu_against_cpu_lookup(const Inspection& in, int width, int hei
         if (ref.visible[i])
             cpu[i] = reader.visibility({.position = ref.position[i], .normal = ref.normal[i]}) < 0.5 ? 0 : 1;
     return agreement(gpu, cpu, ref);
+}
+
+// What a command prints on stdout while it runs.
+template <class Run>
+std::string printed(Run&& run) {
+    std::ostringstream out;
+    std::streambuf* saved = std::cout.rdbuf(out.rdbuf());
+    try {
+        run();
+    } catch (...) {
+        std::cout.rdbuf(saved);
+        throw;
+    }
+    std::cout.rdbuf(saved);
+    return out.str();
 }
 
 }  // namespace shadowlab::testing
