@@ -114,6 +114,21 @@ TEST(MeshTransfer, RoundTripsExactly) {
     }
 }
 
+// A node whose faces were all dropped has vertices and no triangle: the mesh fuzzer's finding of
+// 2026-12-02 (a PLY whose face list was cut), where the empty list was copied from a null pointer.
+TEST(MeshTransfer, RoundTripsANodeWithoutTriangles) {
+    std::vector<NodeMesh> nodes = two_nodes();
+    nodes[0].mesh.triangles.clear();
+    nodes[0].mesh.broken_faces_dropped = 12;
+    const std::optional<std::vector<NodeMesh>> back = decode_node_meshes(encode_node_meshes(nodes));
+    ASSERT_TRUE(back);
+    ASSERT_EQ(back->size(), 2u);
+    EXPECT_TRUE((*back)[0].mesh.triangles.empty());
+    EXPECT_EQ((*back)[0].mesh.vertices, nodes[0].mesh.vertices);
+    EXPECT_EQ((*back)[0].mesh.broken_faces_dropped, 12u);
+    EXPECT_EQ((*back)[1].mesh.triangles, nodes[1].mesh.triangles);
+}
+
 TEST(MeshTransfer, RefusesEveryCutAndEveryRunOn) {
     const std::string bytes = encode_node_meshes(two_nodes());
     for (std::size_t length = 0; length < bytes.size(); ++length)

@@ -46,7 +46,8 @@ public:
         std::uint64_t count = 0;
         if (!get(count) || count > (bytes_.size() - at_) / sizeof(T)) return false;
         values.resize(count);
-        std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
+        // An empty vector's data() may be null, which memcpy may not be given even for 0 bytes.
+        if (count > 0) std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
         at_ += count * sizeof(T);
         return true;
     }
