@@ -1,6 +1,7 @@
 #include "measure_command.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <stdexcept>
 #include <variant>
@@ -8,6 +9,7 @@
 #include "exchange/inspection_json.hpp"
 #include "limits.hpp"
 #include "scene/image_size.hpp"
+#include "metrics/diagnosis.hpp"
 #include "metrics/measurement.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -54,6 +56,20 @@ Json to_json(const ShadowLookup& l) {
 }
 
 }  // namespace
+
+Json to_json(const Diagnosis& d) {
+    Json causes = Json::array();
+    for (const CauseCount& c : d.causes) {
+        Json remedy = nullptr;
+        if (c.remedy)
+            remedy = {{"change", c.remedy->change},
+                      {"removes", c.remedy->removes},
+                      {"adds", c.remedy->adds},
+                      {"misclassified", c.remedy->misclassified}};
+        causes.push_back({{"kind", to_string(c.kind)}, {"pixels", c.pixels}, {"share", c.share}, {"remedy", remedy}});
+    }
+    return {{"misclassified_pixels", d.misclassified}, {"causes", causes}};
+}
 
 Json to_json(const Measurement& m) {
     const ShadowError& e = m.error;
@@ -154,6 +170,25 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
         std::cout << "  fallback: " << (m.fallbacks.empty() ? "none" : describe(m.fallbacks)) << "\n";
 }
 
+// The ranked causes, each with its remedy's outcome.
+void print_text(const Diagnosis& d) {
+    if (d.causes.empty()) return;
+    std::cout << "  why (" << d.misclassified << " misclassified pixels, by cause):\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "    %-16s %8s %8s  %s\n", "cause", "pixels", "share", "remedy: removes, adds");
+    std::cout << line;
+    for (const CauseCount& c : d.causes) {
+        std::snprintf(line, sizeof line, "    %-16s %8zu %7.3f%%  ", to_string(c.kind), c.pixels, 100.0 * c.share);
+        std::cout << line;
+        if (c.remedy)
+            std::cout << c.remedy->change << ": removes " << 100.0 * c.remedy->removes << "% of it, adds "
+                      << 100.0 * c.remedy->adds << "% elsewhere (misclassified " << 100.0 * c.remedy->misclassified
+                      << "% after)\n";
+        else
+            std::cout << "none to measure\n";
+    }
+}
+
 }  // namespace
 
 std::vector<const Method*> methods_named(const std::vector<std::string>& names) {
@@ -195,12 +230,18 @@ void run_measure(const MeasureOptions& o) {
     if (method.makes_maps()) std::cerr << " at " << o.resolution << "^2";
     std::cerr << "...\n";
     const Measurement m = measure(context, method, settings, o.resolution, o.bias);
+    const Diagnosis diagnosis =
+        diagnose(context, method, settings, o.resolution, o.bias, m, [](const CauseInfo& cause, const Remedy& remedy) {
+            std::cerr << "measure: remedy for " << cause.name << ": " << remedy.change << "...\n";
+        });
     if (o.json) {
         Json json = to_json(m);
+        json["diagnosis"] = to_json(diagnosis);
         json["image"] = {context.reference.width, context.reference.height};  // the size the camera's aspect left
         std::cout << json.dump(1) << "\n";
     } else {
         print_text(m, {context.reference.width, context.reference.height});
+        print_text(diagnosis);
     }
 }
 

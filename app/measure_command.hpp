@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "exchange/inspection_json.hpp"
+#include "metrics/diagnosis.hpp"
 #include "metrics/measurement.hpp"
 #include "plot/chart_png.hpp"
 #include "scene_source.hpp"
@@ -29,6 +30,9 @@ void run_measure(const MeasureOptions& options);
 // depth_step 0: no texels; bias null) and "polygons", "fill_mean", "fill_max"; "fallback" is the
 // fallbacks as one line (null for none), "fallbacks" and "limits" list them by kind.
 Json to_json(const Measurement& measurement);
+// measure's "diagnosis": {"misclassified_pixels", "causes": [{"kind", "pixels", "share", "remedy":
+// {"change", "removes", "adds", "misclassified"} or null}]}, most pixels first.
+Json to_json(const Diagnosis& diagnosis);
 // The named methods, or every method of the registry when `names` is empty.
 std::vector<const Method*> methods_named(const std::vector<std::string>& names);
 MeasureContext prepare_with_progress(const std::string& scene_file, const SceneSource& source, int width, int height);

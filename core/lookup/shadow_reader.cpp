@@ -90,6 +90,17 @@ double ShadowReader::map_visibility(int which, const Receiver& r, LookupCount* c
     return filter_->visibility(*this, *m, r, count);
 }
 
+std::optional<TexelRead> ShadowReader::read_texel(int which, const Receiver& r) const {
+    const std::optional<MapReceiver> m = under(which, r);
+    if (!m) return std::nullopt;
+    const glm::ivec2 texel = texel_of(m->map, m->uv, depth_.resolution);
+    const glm::dvec2 centre = texel_centre_uv(m->map, texel, depth_.resolution);
+    return TexelRead{.texel = texel,
+                     .texel_centre_uv = centre,
+                     .stored = depth_.at(texel.x, texel.y),
+                     .receiver = m->depth + glm::dot(m->plane_gradient, centre - m->uv)};
+}
+
 // The weighted share of taps the receiver passes: each reads its nearest texel (kept in the tile)
 // and compares the receiver's depth there, on its plane when the receiver-plane bias is on.
 double ShadowReader::lit_share(const MapReceiver& m, const std::vector<KernelTap>& taps, double radius_texels,

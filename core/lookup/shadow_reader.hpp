@@ -49,6 +49,16 @@ struct MapReceiver {
     double texel_world;         // a texel's world width across the light there
 };
 
+// What a hard lookup of one map reads at a receiver: the texel nearest the biased point, the depth
+// stored there and the receiver's depth compared with it (on its plane at the texel's centre when
+// the receiver-plane bias is on). The receiver is shadowed by this texel when receiver > stored.
+struct TexelRead {
+    glm::ivec2 texel;            // in the setup's texture
+    glm::dvec2 texel_centre_uv;  // in the map's (u, v)
+    double stored = 1.0;         // the texel's depth
+    double receiver = 0.0;       // the receiver's biased depth at that texel
+};
+
 class ShadowReader {
 public:
     // PCSS's blocker search reaches at most this many texels of the map from the point: the light's
@@ -63,6 +73,11 @@ public:
     // The share of the light the receiver sees under the map the setup selects; inside a blend band
     // the two maps' shares crossfaded; no map, or off its square: 1 (lit).
     double visibility(const Receiver& receiver, LookupCount* count = nullptr) const;
+
+    // The one texel a hard lookup of map `map` reads for the receiver, with the biases applied;
+    // nullopt where that map does not cover the biased point (it reads lit). What the diagnosis of
+    // a wrong pixel (metrics/pixel_evidence) decides from.
+    std::optional<TexelRead> read_texel(int map, const Receiver& receiver) const;
 
     // The degradations lookups took: PCSS with a light of no size, searches clamped (from `count`,
     // summed over the lookups judged).

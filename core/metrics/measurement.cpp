@@ -63,15 +63,6 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
 // kLossMargin more (0.05 percentage points: a few pixels of a small image are no loss).
 constexpr double kLossRatio = 2.0, kLossMargin = 0.0005;
 
-// The focused map's settings for a comparison with a warp: its own defaults, read through the
-// warp's filter and bias settings.
-Settings focused_settings_like(const Method& focused, const Settings& settings) {
-    Settings out = resolve_settings(focused.name, focused.settings, {});
-    for (const auto& [name, value] : settings.values())
-        if (is_lookup_setting(name)) out.set(name, value);
-    return out;
-}
-
 // Texels this many times the focused map's (perspective m, 95th percentile) are coarser, not noise.
 constexpr double kCoarser = 1.5;
 
@@ -101,8 +92,7 @@ std::string loss_cause(const Measurement& warp, const Measurement& focused, cons
 std::optional<Note> warp_loss(const MeasureContext& c, const Method& warp, const Settings& settings, int resolution,
                               double bias, const Measurement& measured) {
     const Method& focused = *find_method("focused");
-    const Measurement reference_map =
-        measure_maps(c, focused, focused_settings_like(focused, settings), resolution, bias);
+    const Measurement reference_map = measure_maps(c, focused, settings_like(focused, settings), resolution, bias);
     if (!(measured.error.misclassified > kLossRatio * reference_map.error.misclassified + kLossMargin))
         return std::nullopt;
     Trace trace;
@@ -123,6 +113,13 @@ Measurement measure_geometry(const MeasureContext& c, const Method& method, cons
 }
 
 }  // namespace
+
+Settings settings_like(const Method& other, const Settings& settings) {
+    Settings out = resolve_settings(other.name, other.settings, {});
+    for (const auto& [name, value] : settings.values())
+        if (is_lookup_setting(name)) out.set(name, value);
+    return out;
+}
 
 MeasureContext prepare_measurement(const Scene& scene, int width, int height, int light_samples) {
     MeasureContext c{scene, object_boxes(scene), tessellate(scene), caster_flags(scene), {}};

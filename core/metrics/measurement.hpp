@@ -47,6 +47,10 @@ struct Measurement {
     const std::vector<Note>& notes() const { return geometry ? limits : fallbacks; }
 };
 
+// Another method's defaults read through these settings' filter, bias and depth format: the
+// focused map a warp is held against, the map a remedy measures instead.
+Settings settings_like(const Method& other, const Settings& settings);
+
 // One method against the reference. A map method: its setup (the fastest of a few runs), its maps
 // rasterized at `resolution` texels per side of the texture, read with the settings' filter and
 // bias (lookup/lookup_settings.hpp; a constant `bias` >= 0, the CLI's --bias, replaces the bias

@@ -6,6 +6,7 @@
 #include "lookup/depth_bias.hpp"
 #include "math/parallel_rows.hpp"
 #include "math/singular_values.hpp"
+#include "metrics/pixel_evidence.hpp"
 
 namespace shadowlab {
 
@@ -106,6 +107,7 @@ ShadowError unjudged(const ReferenceImage& ref) {
     e.m_perspective_image.assign(pixels, 0.0f);
     e.m_projection_image.assign(pixels, 0.0f);
     e.verdicts.assign(pixels, PixelVerdict::none);
+    e.causes.assign(pixels, PixelCause::none);
     return e;
 }
 
@@ -199,6 +201,7 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
     e.m_projection = statistics(std::move(projections));
     e.depth_step = statistics(std::move(depth_steps));
     e.visibility = visibility_error(ref, visibility);
+    e.causes = diagnose_pixels(ref, reader, e);
     return e;
 }
 
@@ -212,6 +215,7 @@ ShadowError judge_shadows(const Scene& scene, const ReferenceImage& ref, const s
         }
     tally(e);
     e.visibility = visibility_error(ref, std::move(visibility));
+    e.causes = diagnose_technique(e);
     return e;
 }
 

@@ -5,6 +5,7 @@
 
 #include "maps/map_lookup.hpp"
 #include "lookup/shadow_reader.hpp"
+#include "metrics/pixel_cause.hpp"
 #include "metrics/visibility_error.hpp"
 #include "raster/depth_map.hpp"
 #include "reference/exact_shadows.hpp"
@@ -51,7 +52,8 @@ struct ShadowError {
     // Per pixel; 0 where not measured.
     std::vector<float> m_image, m_perspective_image, m_projection_image;
     std::vector<PixelVerdict> verdicts;  // per pixel
-    VisibilityError visibility;          // against the reference's visibility (soft where traced)
+    std::vector<PixelCause> causes;  // per pixel: why it is misclassified (metrics/pixel_evidence.hpp); none elsewhere
+    VisibilityError visibility;      // against the reference's visibility (soft where traced)
 };
 
 // The visibility of every receiver pixel under the reader's maps (-1 elsewhere): the lookups,
@@ -60,12 +62,14 @@ std::vector<float> receiver_visibility(const Scene& scene, const ReferenceImage&
                                        LookupCount* count = nullptr);
 
 // The reader's maps judged against the reference from those visibilities: a pixel is shadowed
-// below one half. Each pixel's m counts the texels of the map the setup's selection gives it.
+// below one half. Each pixel's m counts the texels of the map the setup's selection gives it; each
+// misclassified pixel gets its cause from what its lookup read.
 ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& reference, const ShadowReader& reader,
                                  const std::vector<float>& visibility);
 
 // The same judgement of a technique without texels (shadow volumes, planar projection): its
-// per-pixel verdicts (1: shadowed) against the reference; m and depth_step stay 0.
+// per-pixel verdicts (1: shadowed) against the reference; m and depth_step stay 0; the cause of
+// every wrong pixel is `technique`.
 ShadowError judge_shadows(const Scene& scene, const ReferenceImage& reference, const std::vector<uint8_t>& shadowed);
 
 // m at one pixel from the map coordinates of it and its neighbours one pixel right and down:
