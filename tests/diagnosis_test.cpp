@@ -170,6 +170,23 @@ TEST(Diagnosis, AMapCoveringHalfTheViewGivesOutsideMap) {
     expect_top_cause_remedied(r, PixelCause::outside_map);
 }
 
+// Planted: a 16-bit map over a depth range of 1e5: a speck of a caster 1e5 along the light from the
+// lone box stretches the focused map's depths to it, so one 16-bit step spans 1.5 world units, and
+// the box's faces lit by the light read their own depth rounded by up to half of that: false
+// shadow decided within one step. A 32-bit float map removes most of it.
+TEST(Diagnosis, ASixteenBitMapOverADepthRangeOf1e5GivesDepthPrecision) {
+    Scene scene = shipped("box_on_plane");
+    SceneObject speck;
+    speck.shape = Shape::sphere;
+    speck.radius = 0.01;
+    speck.position = -1e5 * glm::normalize(scene.light.direction);
+    speck.receives = false;
+    scene.objects.push_back(speck);
+    const DiagnosedRun r = diagnosed(scene, "focused", {{"depth_format", "unorm16"}}, 1024);
+    EXPECT_GT(r.measured.error.depth_step.p95, 1.0);  // world units per step
+    expect_top_cause_remedied(r, PixelCause::depth_precision);
+}
+
 // Planted: cascades with no blend band: pixels beside a boundary between two cascades' pixels
 // that the other cascade reads right.
 TEST(Diagnosis, CascadesWithoutABlendBandShowSeams) {
