@@ -9,6 +9,7 @@
 
 #include "io/value_text.hpp"
 #include "limits.hpp"
+#include "metrics/diagnosis.hpp"
 #include "scene/image_size.hpp"
 #include "scene/scene_loader.hpp"
 #include "views/offscreen_view.hpp"
@@ -114,6 +115,10 @@ table.matrix td { text-align: right; padding: 0 0.6em; }
 figure { display: inline-block; margin: 0.5em 0.5em 0 0; }
 figure img { display: block; border: 1px solid #ccc; }
 figcaption { font-size: 90%; color: #555; }
+table.causes { border-collapse: collapse; margin: 0.5em 0; }
+table.causes th, table.causes td { border-bottom: 1px solid #ddd; padding: 0.2em 0.6em; text-align: left; vertical-align: top; }
+table.causes td.number { text-align: right; white-space: nowrap; }
+.swatch { display: inline-block; width: 0.9em; height: 0.9em; margin-right: 0.4em; vertical-align: -0.1em; border: 1px solid #888; }
 </style>)";
 
 std::string page_head(const Inspection& in, const LessonOptions& o, MatrixLayout layout) {
@@ -135,6 +140,61 @@ Inspection inspect_for_lesson(const LessonOptions& o) {
                                  .resolution = o.resolution,
                                  .image_width = camera_image.x,
                                  .image_height = camera_image.y});
+}
+
+std::string percent(double share, int decimals) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f %%", decimals, 100.0 * share);
+    return text;
+}
+
+std::string cause_row(const CauseCount& c) {
+    const CauseInfo& cause = info(c.kind);
+    char swatch[96];
+    std::snprintf(swatch, sizeof swatch, "<span class=\"swatch\" style=\"background: rgb(%d, %d, %d)\"></span>",
+                  cause.colour[0], cause.colour[1], cause.colour[2]);
+    std::string row = "<tr><td>" + std::string(swatch) + "<code>" + cause.name + "</code></td><td class=\"number\">" +
+                      std::to_string(c.pixels) + "</td><td class=\"number\">" + percent(c.share, 3) + "</td><td>" +
+                      html_escaped(cause.meaning) + "</td>";
+    if (!c.remedy) return row + "<td colspan=\"3\">none to measure</td></tr>";
+    return row + "<td>" + html_escaped(c.remedy->change) + "</td><td class=\"number\">" +
+           percent(c.remedy->removes, 1) + " of it</td><td class=\"number\">" + percent(c.remedy->adds, 3) +
+           " elsewhere (" + percent(c.remedy->misclassified, 3) + " misclassified after)</td></tr>";
+}
+
+// "What goes wrong": the run measured against the exact reference of the pictures' camera image,
+// its misclassified pixels ranked by cause (metrics/pixel_cause.hpp) with each cause's remedy
+// measured (metrics/diagnosis.hpp: what share of the cause it removes, what it adds elsewhere), and
+// the Error view coloured by cause over the same pixels.
+std::string what_goes_wrong(const Inspection& in, const LessonOptions& o, const std::filesystem::path& dir) {
+    const MeasureContext context = prepare_measurement(in.scene, o.width, o.height);
+    const Measurement run = measure(context, *in.method, in.settings, in.resolution, in.bias);
+    const Diagnosis d = diagnose(context, *in.method, in.settings, in.resolution, in.bias, run);
+    std::string html = "<section id=\"what-goes-wrong\"><h2>What goes wrong</h2>\n<p>";
+    const std::string judged = std::to_string(context.reference.width) + "x" + std::to_string(context.reference.height);
+    if (d.causes.empty()) {
+        html += "Against the exact reference of the " + judged + " camera image, no receiver pixel is misclassified.";
+    } else {
+        html += std::to_string(d.misclassified) + " of " + std::to_string(run.error.receiver_pixels) +
+                " receiver pixels of the " + judged + " camera image are misclassified against the exact reference (" +
+                percent(run.error.misclassified, 3) +
+                "). Each has the cause its lookup read; each cause's remedy was measured on the same reference.";
+    }
+    html += "</p>\n";
+    if (!d.causes.empty()) {
+        html +=
+            "<table class=\"causes\"><tr><th>cause</th><th>pixels</th><th>share</th><th>meaning</th>"
+            "<th>remedy</th><th>removes</th><th>adds</th></tr>\n";
+        for (const CauseCount& c : d.causes) html += cause_row(c) + "\n";
+        html += "</table>\n";
+    }
+    const char* file = "what-goes-wrong-error-causes.png";
+    const ViewOptions options{
+        .width = context.reference.width, .height = context.reference.height, .error = ErrorShown::causes};
+    write_png(render_view(in, view_or_throw("error"), options, o.width, o.height), (dir / file).string());
+    return html + "<figure><img src=\"" + file + "\" width=\"" + std::to_string(o.width) +
+           "\" alt=\"Error by cause\"><figcaption>Error, each misclassified pixel in its cause's colour</figcaption>"
+           "</figure></section>\n";
 }
 
 }  // namespace
@@ -169,6 +229,8 @@ int run_lesson(const LessonOptions& o) {
         }
         html += "</div></section>\n";
     }
+    html += what_goes_wrong(in, o, dir);
+    ++pictures;
     html += "</body></html>\n";
     std::ofstream page(dir / "index.html");
     page << html;

@@ -4,7 +4,9 @@
 // the formula it applies, its values (matrices as 4 x 4 tables) and the views that show it, drawn
 // by the same code as the window: the World view for steps in the world, Light space and PPLS from
 // the light and from the side, both sides of the warp at the step that applies it, and for the last
-// step the Camera, Shadow map and Error views.
+// step the Camera, Shadow map and Error views. Then "What goes wrong": the run's misclassified
+// pixels ranked by cause, each cause's meaning and its remedy measured (what it removes, what it
+// adds), and the Error view coloured by cause.
 #include <map>
 #include <string>
 

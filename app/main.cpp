@@ -168,7 +168,8 @@ int main(int argc, char** argv) {
     render_cmd
         ->add_option("--error", render.error,
                      "the Error view: verdicts (false shadow, false light, m) | signed (visibility error, "
-                     "method − reference) | auto (signed where shadows are soft)")
+                     "method − reference) | causes (each misclassified pixel's cause: acne, peter panning, "
+                     "under-sampling, ...) | auto (signed where shadows are soft)")
         ->capture_default_str();
     render_cmd
         ->add_option("--texture", render.texture,

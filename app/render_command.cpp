@@ -22,10 +22,10 @@ AliasingShown aliasing_or_throw(const std::string& name) {
 }
 
 ErrorShown error_or_throw(const std::string& name) {
-    if (name == "auto") return ErrorShown::automatic;
-    if (name == "verdicts") return ErrorShown::verdicts;
-    if (name == "signed") return ErrorShown::signed_visibility;
-    throw std::invalid_argument("--error: unknown '" + name + "' (one of auto, verdicts, signed)");
+    if (const auto shown = error_shown_named(name)) return *shown;
+    std::string names;
+    for (const ErrorChoice& c : all_error_choices()) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    throw std::invalid_argument("--error: unknown '" + name + "' (one of " + names + ")");
 }
 
 TextureShown texture_or_throw(const std::string& name) {

@@ -44,6 +44,7 @@ const Baseline kBaselineViews[] = {
      {.step = "xpsm-13", .preset = SpacePreset::from_light}},
     {"shadowmap_xpsm_default", "default.json", "xpsm", "shadowmap", {}},
     {"error_lispsm_default", "default.json", "lispsm", "error", {}},
+    {"error_causes_lispsm_default", "default.json", "lispsm", "error", {.error = ErrorShown::causes}},
 };
 
 void PrintTo(const Baseline& b, std::ostream* out) { *out << b.name; }

@@ -11,8 +11,10 @@
 #include "io/value_text.hpp"
 #include "lesson_command.hpp"
 #include "math/matrix.hpp"
+#include "metrics/diagnosis.hpp"
 #include "model/inspection.hpp"
 #include "render/rgb_image.hpp"
+#include "scene/image_size.hpp"
 #include "scene/scene_loader.hpp"
 
 using namespace shadowlab;
@@ -101,6 +103,41 @@ TEST(Lesson, MatricesAsComputedOrAsThePapersPrintThem) {
         const glm::dvec4 expected = row_vectors ? world_to_uvz[0] : row(world_to_uvz, 0);
         for (int c = 0; c < 4; ++c) EXPECT_EQ(cells[c], significant(expected[c], 4)) << "column " << c;
     }
+}
+
+// "What goes wrong": with no bias at all, acne over the box's lit faces leads the causes; the
+// table ranks them as the inspection's own error over the pictures' camera image does, and the
+// Error view by cause is shown beside it.
+TEST(Lesson, WhatGoesWrongRanksTheCausesTheCommonestFirst) {
+    LessonOptions options = lesson_into("lesson_wrong_", false);
+    options.method = "psm";
+    options.settings = {{"bias_slope", "0"}};
+    run_lesson(options);
+    const std::string html = read_text(std::filesystem::path(options.out) / "index.html");
+    const size_t at = html.find("<section id=\"what-goes-wrong\"><h2>What goes wrong</h2>");
+    ASSERT_NE(at, std::string::npos);
+    const std::string section = html.substr(at);
+
+    const Scene scene = load_scene(kScene);
+    const glm::ivec2 image = image_size_within(scene.camera, options.width, options.height);
+    const Inspection in = inspect_scene(scene, {.method = options.method,
+                                                .settings = options.settings,
+                                                .resolution = options.resolution,
+                                                .image_width = image.x,
+                                                .image_height = image.y});
+    const Diagnosis d = count_causes(in.error(image.x, image.y));
+    ASSERT_FALSE(d.causes.empty());
+    EXPECT_EQ(d.causes.front().kind, PixelCause::acne);
+
+    std::smatch first;
+    ASSERT_TRUE(
+        std::regex_search(section, first,
+                          std::regex(R"re(<tr><td><span class="swatch"[^>]*></span><code>([a-z_]+)</code></td>)re"
+                                     R"re(<td class="number">([0-9]+)</td>)re")));
+    EXPECT_EQ(first[1].str(), to_string(d.causes.front().kind));
+    EXPECT_EQ(std::stoul(first[2].str()), d.causes.front().pixels);
+    EXPECT_NE(section.find("bias_slope 0 → 1"), std::string::npos) << "the acne's remedy";
+    EXPECT_NE(section.find("<img src=\"what-goes-wrong-error-causes.png\""), std::string::npos);
 }
 
 TEST(Lesson, AMissingOutputDirectoryIsRefusedByName) {

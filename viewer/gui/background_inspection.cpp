@@ -83,18 +83,22 @@ void BackgroundInspection::deliver(std::uint64_t number, std::function<void()> e
         Qt::QueuedConnection);
 }
 
-// The phases: the method (inspect_scene), then each panel's lazy parts, then the plot. Between two,
-// a newer job cancels this one; a result is posted to the GUI thread only if none came.
+// The phases: the method (inspect_scene), then each panel's lazy parts and the diagnosis's error,
+// then the plot. Between two, a newer job cancels this one; a result is posted to the GUI thread
+// only if none came.
 void BackgroundInspection::run(const InspectionJob& job, std::uint64_t number) {
-    const int phases = 1 + static_cast<int>(job.shown.size()) + (job.plot ? 1 : 0);
+    std::vector<std::pair<std::string, const ShownView*>> prepared;
+    for (const ShownView& shown : job.shown)
+        prepared.emplace_back("preparing the " + shown.view->title + " view", &shown);
+    if (job.diagnosis) prepared.emplace_back("diagnosing the misclassified pixels", &*job.diagnosis);
+    const int phases = 1 + static_cast<int>(prepared.size()) + (job.plot ? 1 : 0);
     try {
         enter_phase("computing " + job.request.method, 0, phases);
         auto inspection = std::make_shared<const Inspection>(inspect_scene(job.scene, job.request));
-        for (size_t i = 0; i < job.shown.size(); ++i) {
+        for (size_t i = 0; i < prepared.size(); ++i) {
             if (superseded(number)) return;
-            const ShownView& shown = job.shown[i];
-            enter_phase("preparing the " + shown.view->title + " view", 1 + static_cast<int>(i), phases);
-            prepare_view(*inspection, *shown.view, shown.options);
+            enter_phase(prepared[i].first, 1 + static_cast<int>(i), phases);
+            prepare_view(*inspection, *prepared[i].second->view, prepared[i].second->options);
         }
         deliver(number, [this, inspection] { emit landed(inspection); });
         if (!job.plot || superseded(number)) return;

@@ -29,11 +29,13 @@ struct ShownView {
 };
 
 // One change of the window: the scene as it stands (the camera's aspect the one in force), the
-// controls' request, the panels shown, and the plot if the Plot dock is shown.
+// controls' request, the panels shown, the Error view whose error the Diagnosis dock reads if it
+// is shown, and the plot if the Plot dock is shown.
 struct InspectionJob {
     Scene scene;
     InspectionRequest request;
     std::vector<ShownView> shown;
+    std::optional<ShownView> diagnosis;
     std::optional<PlotRequest> plot;
 };
 

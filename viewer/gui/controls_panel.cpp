@@ -69,6 +69,17 @@ QString setting_text(const QWidget* editor) {
     return QString::number(static_cast<const QDoubleSpinBox*>(editor)->value(), 'g', 12);
 }
 
+// The editor shows `text`, without telling anyone.
+void set_setting_text(QWidget* editor, const QString& text) {
+    const QSignalBlocker block(editor);
+    if (auto* box = qobject_cast<QComboBox*>(editor))
+        box->setCurrentText(text);
+    else if (auto* line = qobject_cast<QLineEdit*>(editor))
+        line->setText(text);
+    else
+        static_cast<QDoubleSpinBox*>(editor)->setValue(text.toDouble());
+}
+
 }  // namespace
 
 ControlsPanel::ControlsPanel(QWidget* parent)
@@ -223,6 +234,7 @@ bool ControlsPanel::applies(const QWidget* editor) const {
 void ControlsPanel::show_filter_settings() {
     if (!filter_header_) return;
     for (const auto& [label, editor] : filter_rows_) {
+        if (settings_form_->indexOf(editor) < 0) continue;                       // a row taken out before
         const QFormLayout::TakeRowResult row = settings_form_->takeRow(editor);  // the widgets stay, the items are ours
         delete row.labelItem;
         delete row.fieldItem;
@@ -290,6 +302,29 @@ bool ControlsPanel::set_text_setting(const QString& name, const QString& value) 
 void ControlsPanel::set_resolution(int resolution) {
     const int index = resolution_->findData(resolution);
     if (index >= 0) resolution_->setCurrentIndex(index);
+}
+
+void ControlsPanel::set_request(const InspectionRequest& request) {
+    if (method_->currentData().toString().toStdString() != request.method) {
+        const QSignalBlocker block(method_);
+        set_method(QString::fromStdString(request.method));
+        rebuild_settings();
+    }
+    for (QWidget* editor : setting_editors_)
+        if (const auto it = request.settings.find(editor->objectName().toStdString()); it != request.settings.end())
+            set_setting_text(editor, QString::fromStdString(it->second));
+    show_filter_settings();
+    if (request.resolution > 0) {
+        const QSignalBlocker block(resolution_);
+        if (resolution_->findData(request.resolution) < 0) {  // in order among the others
+            int at = 0;
+            while (at < resolution_->count() && resolution_->itemData(at).toInt() < request.resolution) ++at;
+            resolution_->insertItem(at, QString::number(request.resolution) + "²", request.resolution);
+        }
+        set_resolution(request.resolution);
+    }
+    bias_->setValue(request.bias < 0.0 ? bias_->minimum() : request.bias);  // tells no one: editingFinished
+    emit changed();
 }
 
 }  // namespace shadowlab

@@ -36,6 +36,10 @@ public:
     // False when the method has no such text setting.
     bool set_text_setting(const QString& name, const QString& value);
     void set_resolution(int resolution);
+    // Another run in one change (the Diagnosis dock's remedy): the method, each of its settings the
+    // request names, the resolution (offered if it was not) and the bias; the light, the aspect and
+    // the toggles stay. Emits changed() once.
+    void set_request(const InspectionRequest& request);
     QComboBox* method_selector() const { return method_; }
     bool camera_in_shadow() const;
     bool aspect_locked() const;     // the scene camera's aspect, as the CLI computes; else the Camera panel's

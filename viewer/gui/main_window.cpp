@@ -21,6 +21,7 @@
 
 #include "gui/camera_matrices_dialog.hpp"
 #include "gui/controls_panel.hpp"
+#include "gui/diagnosis_panel.hpp"
 #include "gui/file_dialogs.hpp"
 #include "gui/panel_scheduler.hpp"
 #include "gui/plot_panel.hpp"
@@ -30,6 +31,7 @@
 #include "exchange/camera_import.hpp"
 #include "render/opengl_renderer.hpp"
 #include "render/rgb_image.hpp"
+#include "views/view_parts.hpp"
 
 namespace shadowlab {
 namespace {
@@ -59,6 +61,7 @@ MainWindow::MainWindow(QWidget* parent)
       scene_panel_(new ScenePanel(this)),
       steps_(new StepPlayer(this)),
       plot_(new PlotPanel(this)),
+      diagnosis_(new DiagnosisPanel(this)),
       messages_(new QPlainTextEdit(this)),
       resize_timer_(new QTimer(this)) {
     setWindowTitle("ShadowLab");
@@ -127,6 +130,9 @@ MainWindow::MainWindow(QWidget* parent)
     QDockWidget* plot_dock = dock("Plot", "plotDock", plot_, this);
     addDockWidget(Qt::BottomDockWidgetArea, plot_dock);
     plot_dock->hide();  // measured on demand: View > Plot
+    diagnosis_dock_ = dock("Diagnosis", "diagnosisDock", diagnosis_, this);
+    addDockWidget(Qt::RightDockWidgetArea, diagnosis_dock_);  // under the steps
+    diagnosis_dock_->hide();                                  // its error needs a reference traced: View > Diagnosis
     build_menus();
     if (software) message(QString::fromStdString("software OpenGL (" + renderer + "): multisampling off"), false);
     statusBar()->showMessage("drop a scene (.json) or a mesh (.obj, .ply, .stl, .gltf) here, or use File > Open");
@@ -157,6 +163,14 @@ MainWindow::MainWindow(QWidget* parent)
     connect(plot_dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) recompute();
     });
+    connect(diagnosis_dock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) recompute();
+    });
+    connect(diagnosis_, &DiagnosisPanel::remedyChosen, this,
+            [this](const InspectionRequest& request, const QString& change) {
+                message("remedy applied: " + change, false);
+                controls_->set_request(request);
+            });
     restore_settings();
 }
 
@@ -293,6 +307,8 @@ void MainWindow::recompute() {
     job.scene.camera.aspect = aspect.aspect;
     for (ViewPanel* panel : panels_)
         job.shown.push_back({&panel->view(), panel->options_for(view_options(), aspect.aspect)});
+    diagnosis_requested_ = diagnosis_dock_->isVisible();
+    if (diagnosis_requested_) job.diagnosis = diagnosed_view(aspect.aspect);
     const Method* method = find_method(job.request.method);
     if (plot_->isVisible() && method && method->makes_maps())
         job.plot = plot_->request(job.scene, job.request.method, job.request.settings, job.request.resolution);
@@ -339,7 +355,27 @@ void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
         QString::fromStdString(shown.title() + " — " + what + " — " + told) +
         QString(" — aspect %1 from %2").arg(shown.scene.camera.aspect, 0, 'f', 2).arg(aspect_source_));
     if (!notes.empty()) message(QString::fromStdString(told), false);
+    diagnosis_prepared_ = diagnosis_requested_;  // the job that landed is the newest submitted
     redraw();
+}
+
+// The Error view the Diagnosis dock reads: a panel's that shows it (the pixels its legend counts),
+// else the Error view at its own size.
+ShownView MainWindow::diagnosed_view(double aspect) const {
+    const View& error = view_or_throw("error");
+    for (ViewPanel* panel : panels_)
+        if (panel->view() == error) return {&error, panel->options_for(view_options(), aspect)};
+    return {&error, ViewOptions{}};
+}
+
+// The causes of the inspection shown, in the pixels the Error panel draws now: those its job
+// prepared, or, a panel resized since, those the panel itself will judge.
+void MainWindow::show_diagnosis() {
+    if (!diagnosis_prepared_ || !diagnosis_dock_->isVisible()) return;
+    const Inspection& shown = *session_.inspection();
+    const ShownView diagnosed = diagnosed_view(shown.scene.camera.aspect);
+    const glm::ivec2 size = judged_image_size(shown, diagnosed.options);
+    diagnosis_->show_diagnosis(shown, shown.error(size.x, size.y));
 }
 
 // The newest change cannot be inspected: said, the views keep the last inspection, and a scene just
@@ -371,6 +407,7 @@ void MainWindow::move_light_to(const glm::dvec3& point) {
 
 // Every panel from the inspection shown.
 void MainWindow::redraw() {
+    show_diagnosis();
     for (ViewPanel* panel : panels_) redraw(panel);
 }
 

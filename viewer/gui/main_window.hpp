@@ -1,7 +1,8 @@
 #pragma once
 // The inspector's window, its shell: controls on the left, four linked views in the middle, the
-// step player on the right (the full height), messages (one line until an error) and the plot
-// below, the menus and their dialogs (gui/file_dialogs, gui/camera_matrices_dialog). What is open
+// step player on the right (the full height; the diagnosis under it when shown: the causes of the
+// misclassified pixels, their remedies applied in one click), messages (one line until an error)
+// and the plot below, the menus and their dialogs (gui/file_dialogs, gui/camera_matrices_dialog). What is open
 // is the Session's (model/session: the scene, the inspection shown, a failed open rolled back).
 // Every change recomputes the method once, off the GUI thread (BackgroundInspection: the latest
 // change wins, a progress line shows work over 100 ms), and the PanelScheduler redraws all views
@@ -18,6 +19,7 @@
 #include "model/session.hpp"
 
 class QAction;
+class QDockWidget;
 class QMenu;
 class QPlainTextEdit;
 class QProgressBar;
@@ -27,6 +29,7 @@ class QTimer;
 namespace shadowlab {
 
 class ControlsPanel;
+class DiagnosisPanel;
 class PanelScheduler;
 class ScenePanel;
 class PlotPanel;
@@ -68,6 +71,7 @@ public:
     ControlsPanel* controls() const { return controls_; }
     StepPlayer* steps() const { return steps_; }
     PlotPanel* plot() const { return plot_; }
+    DiagnosisPanel* diagnosis() const { return diagnosis_; }
     ScenePanel* scene_panel() const { return scene_panel_; }
     const std::vector<ViewPanel*>& panels() const { return panels_; }
     QString last_message() const { return last_message_; }
@@ -94,6 +98,8 @@ private:
     void show_progress();
     void end_progress();
     ViewOptions view_options() const;  // what every panel draws with
+    ShownView diagnosed_view(double aspect) const;
+    void show_diagnosis();
     void show_before_after_warp();
     void move_light_to(const glm::dvec3& point);
     void put_camera_in_shadow(bool inside);
@@ -127,6 +133,10 @@ private:
     QAction* save_scene_ = nullptr;
     StepPlayer* steps_;
     PlotPanel* plot_;
+    DiagnosisPanel* diagnosis_;
+    QDockWidget* diagnosis_dock_ = nullptr;
+    bool diagnosis_requested_ = false;  // the newest change's job prepares the Diagnosis dock's error
+    bool diagnosis_prepared_ = false;   // ... and the inspection shown had it prepared
     QPlainTextEdit* messages_;
     std::vector<ViewPanel*> panels_;
     std::vector<QSplitter*> splitters_;

@@ -50,14 +50,13 @@ ViewPanel::ViewPanel(const View& initial, QWidget* parent)
     for (const View& v : all_views())
         chooser_->addItem(QString::fromStdString(v.title), QString::fromStdString(v.name));
     chooser_->setObjectName("viewChooser");
-    error_->addItem("Automatic", static_cast<int>(ErrorShown::automatic));
-    error_->addItem("Verdicts", static_cast<int>(ErrorShown::verdicts));
-    error_->addItem("Signed visibility", static_cast<int>(ErrorShown::signed_visibility));
+    for (const ErrorChoice& c : all_error_choices()) error_->addItem(c.title, static_cast<int>(c.shown));
     error_->setObjectName("errorChooser");
     error_->setToolTip(
-        "each pixel's verdict (false shadow, false light, over Lloyd's m), or its visibility error, "
-        "method − reference (blue too dark, red too light); automatic: signed where shadows are soft "
-        "(a light with a size, or a filter other than hard)");
+        "each pixel's verdict (false shadow, false light, over Lloyd's m), its visibility error, "
+        "method − reference (blue too dark, red too light), or each misclassified pixel's cause (acne, "
+        "peter panning, under-sampling, ...: View ▸ Diagnosis ranks them); automatic: signed where "
+        "shadows are soft (a light with a size, or a filter other than hard)");
     texture_->addItem("Depth", static_cast<int>(TextureShown::depth));
     texture_->addItem("Moments: mean", static_cast<int>(TextureShown::moment_mean));
     texture_->addItem("Moments: deviation", static_cast<int>(TextureShown::moment_deviation));
@@ -182,8 +181,8 @@ ViewReport ViewPanel::show(const Inspection& inspection, const ViewOptions& opti
     if (shown.interaction.through_scene_camera) letterbox(renderer, inspection.scene.camera);
     const ViewOptions sized = options_for(options, inspection.scene.camera.aspect);
     // A chooser the inspection gives nothing to choose is greyed: m beside the signed error, the
-    // moments of a filter that reads none.
-    aliasing_->setEnabled(!shows_signed_error(inspection, sized.error));
+    // causes or a technique's verdicts, the moments of a filter that reads none.
+    aliasing_->setEnabled(shows_aliasing(inspection, sized.error));
     texture_->setEnabled(inspection.has_map() && inspection.lookup.filter.reads_moments());
     const ViewReport report = build_view(renderer, inspection, shown, sized);
     const ViewDrag drag = shown.interaction.drag;

@@ -7,7 +7,10 @@
 // pixels are light grey where lit and dark grey where shadowed. The signed visibility error, where
 // shadows are soft (a verdict of a penumbra pixel says little): each judged pixel's method −
 // reference visibility on a diverging ramp, blue too dark, white exact, red too light, with the RMSE,
-// MAE and the reference's own noise. Where no surface is judged, the greys of the verdicts.
+// MAE and the reference's own noise. Where no surface is judged, the greys of the verdicts. The
+// causes: each misclassified pixel in its cause's colour (the table of metrics/pixel_cause.hpp), a
+// legend ranking the causes present by their pixels; the agreeing pixels in the technique's greys
+// for every method (the heat map's reds, oranges and yellows would pass for causes' colours).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,6 +18,7 @@
 
 #include <vtkRenderer.h>
 
+#include "metrics/diagnosis.hpp"
 #include "metrics/shadow_error.hpp"
 #include "reference/exact_shadows.hpp"
 #include "views/colour_bar.hpp"
@@ -52,36 +56,52 @@ Rgb unjudged_colour(const ReferenceImage& ref, size_t i) {
     return ref.visible[i] ? colours::kNotJudged : colours::kNotVisible;
 }
 
-Rgb pixel_colour(const ShadowError& e, const ReferenceImage& ref, const std::vector<float>& heat_image, bool has_map,
-                 size_t i) {
+// An agreeing pixel: m on the heat map, if given, else grey by the reference's verdict.
+Rgb pixel_colour(const ShadowError& e, const ReferenceImage& ref, const std::vector<float>* heat_image, size_t i) {
     if (e.verdicts[i] == PixelVerdict::agree) {
-        if (has_map) return heat(heat_position(heat_image[i]));
+        if (heat_image) return heat(heat_position((*heat_image)[i]));
         return ref.lit[i] ? colours::kAgreeLit : colours::kAgreeShadowed;
     }
     return unjudged_colour(ref, i);
+}
+
+RgbImage paint_agreeing(const ShadowError& e, const ReferenceImage& ref, const std::vector<float>* heat_image) {
+    RgbImage image(ref.width, ref.height);
+    for (size_t i = 0; i < ref.visible.size(); ++i) {
+        const Rgb c = pixel_colour(e, ref, heat_image, i);
+        std::copy(c.begin(), c.end(), image.rgb.begin() + 3 * i);
+    }
+    return image;
+}
+
+// The 3x3 block around pixel i, so that a lone pixel is seen.
+void fill_block(RgbImage& image, size_t i, const Rgb& colour) {
+    const int x = static_cast<int>(i % image.width), y = static_cast<int>(i / image.width);
+    for (int ny = std::max(0, y - 1); ny <= std::min(image.height - 1, y + 1); ++ny)
+        for (int nx = std::max(0, x - 1); nx <= std::min(image.width - 1, x + 1); ++nx)
+            std::copy(colour.begin(), colour.end(), image.at(nx, ny));
 }
 
 // Each misclassified pixel as a 3x3 block of its kind's colour; false light drawn last, on top.
 void mark_misclassified(RgbImage& image, const ShadowError& e) {
     for (const auto& [kind, colour] : {std::pair{PixelVerdict::false_shadow, colours::kFalseShadow},
                                        std::pair{PixelVerdict::false_light, colours::kFalseLight}})
-        for (int y = 0; y < image.height; ++y)
-            for (int x = 0; x < image.width; ++x) {
-                if (e.verdicts[static_cast<size_t>(y) * image.width + x] != kind) continue;
-                for (int ny = std::max(0, y - 1); ny <= std::min(image.height - 1, y + 1); ++ny)
-                    for (int nx = std::max(0, x - 1); nx <= std::min(image.width - 1, x + 1); ++nx)
-                        std::copy(colour.begin(), colour.end(), image.at(nx, ny));
-            }
+        for (size_t i = 0; i < e.verdicts.size(); ++i)
+            if (e.verdicts[i] == kind) fill_block(image, i, colour);
 }
 
-RgbImage paint(const ShadowError& e, const ReferenceImage& ref, const std::vector<float>& heat_image, bool has_map) {
-    RgbImage image(ref.width, ref.height);
-    for (size_t i = 0; i < ref.visible.size(); ++i) {
-        const Rgb c = pixel_colour(e, ref, heat_image, has_map, i);
-        std::copy(c.begin(), c.end(), image.rgb.begin() + 3 * i);
-    }
-    mark_misclassified(image, e);
-    return image;
+// Each misclassified pixel as a 3x3 block of its cause's colour, the rarer causes' blocks drawn over
+// the commoner's; then every misclassified pixel itself in its own cause's colour, so that a block
+// never hides another cause's pixel.
+void mark_causes(RgbImage& image, const ShadowError& e, const Diagnosis& d) {
+    for (const CauseCount& cause : d.causes)
+        for (size_t i = 0; i < e.causes.size(); ++i)
+            if (e.causes[i] == cause.kind) fill_block(image, i, info(cause.kind).colour);
+    for (size_t i = 0; i < e.causes.size(); ++i)
+        if (e.causes[i] != PixelCause::none) {
+            const Rgb& colour = info(e.causes[i]).colour;
+            std::copy(colour.begin(), colour.end(), image.rgb.begin() + 3 * i);
+        }
 }
 
 RgbImage paint_signed_error(const VisibilityError& v, const ReferenceImage& ref) {
@@ -98,6 +118,17 @@ glm::dvec3 unit_colour(const error_colours::Colour& c) { return glm::dvec3(c[0],
 void add_misclassified_legend(vtkRenderer* renderer) {
     add_legend(renderer, {{unit_colour(colours::kFalseShadow), "false shadow (acne)"},
                           {unit_colour(colours::kFalseLight), "false light (leak)"}});
+}
+
+// The causes present, most pixels first: "acne 1234 px (0.512%)".
+void add_causes_legend(vtkRenderer* renderer, const Diagnosis& d) {
+    std::vector<LegendEntry> entries;
+    for (const CauseCount& c : d.causes) {
+        char text[120];
+        std::snprintf(text, sizeof text, "%s %zu px (%.3f%%)", to_string(c.kind), c.pixels, 100 * c.share);
+        entries.push_back({unit_colour(info(c.kind).colour), text});
+    }
+    add_legend(renderer, entries);
 }
 
 void add_aliasing_bar(vtkRenderer* renderer, const char* quantity) {
@@ -179,8 +210,21 @@ ViewReport build_error_view(vtkRenderer* renderer, const Inspection& in, const V
         add_caption(renderer, "Error — " + judged_as(in, ref) + why + ": " + visibility_summary(e.visibility));
         return {};
     }
+    if (options.error == ErrorShown::causes) {
+        const Diagnosis d = count_causes(e);
+        RgbImage image = paint_agreeing(e, ref, nullptr);
+        mark_causes(image, e, d);
+        show_image(renderer, image);
+        add_causes_legend(renderer, d);
+        const std::string what = in.has_map() ? " " + std::to_string(in.resolution) + "²" : "";
+        add_caption(renderer, "Error — " + in.name() + what + ": " + shares(e) +
+                                  "; coloured by cause, agreeing pixels grey (light: lit)");
+        return {};
+    }
     const Shown aliasing = shown(e, options.aliasing);
-    show_image(renderer, paint(e, ref, aliasing.image, in.has_map()));
+    RgbImage image = paint_agreeing(e, ref, in.has_map() ? &aliasing.image : nullptr);
+    mark_misclassified(image, e);
+    show_image(renderer, image);
     add_misclassified_legend(renderer);
     if (!in.has_map()) {
         add_caption(renderer, "Error — " + in.name() + ": " + shares(e) + "; agreeing pixels grey (light: lit)");

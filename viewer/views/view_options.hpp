@@ -15,15 +15,26 @@ namespace shadowlab {
 enum class AliasingShown { total, perspective, projection };
 
 // What the Error view paints: each pixel's verdict against the reference (false shadow, false light,
-// Lloyd's m beneath), or its signed visibility error, method − reference (ShadowError::visibility);
+// Lloyd's m beneath), its signed visibility error, method − reference (ShadowError::visibility), or
+// each misclassified pixel's cause (ShadowError::causes, in the colours of metrics/pixel_cause.hpp);
 // automatic: the signed error where shadows are soft, the verdicts where they are hard.
-enum class ErrorShown { automatic, verdicts, signed_visibility };
+enum class ErrorShown { automatic, verdicts, signed_visibility, causes };
+// Each choice once: its name on the command line (`render --error causes`), its title in the window.
+struct ErrorChoice {
+    ErrorShown shown;
+    const char* name;
+    const char* title;
+};
+const std::vector<ErrorChoice>& all_error_choices();
+std::optional<ErrorShown> error_shown_named(const std::string& name);  // nullopt for an unknown name
 // Are shadows soft, so that a verdict (shadowed or lit) no longer says how far a pixel is off? The
 // light has a size (the reference is soft) or the filter is not hard (the method's visibility is
 // fractional).
 bool soft_shadows(const Inspection& inspection);
 // The Error view's choice resolved: does it paint the signed visibility error?
 bool shows_signed_error(const Inspection& inspection, ErrorShown shown);
+// Does it paint Lloyd's m (or a factor) beneath the verdicts? A map's verdicts only.
+bool shows_aliasing(const Inspection& inspection, ErrorShown shown);
 
 // What the Shadow map view paints per texel: the stored depth, or, for a filter that reads moments
 // (vsm, evsm), the blurred moments' mean or standard deviation √(m₂ − m₁²) (lookup/moment_map.hpp).
@@ -45,7 +56,7 @@ struct ViewOptions {
     MapOverlay overlay = MapOverlay::none;  // camera view of a map method: each fragment's map or texels per pixel
     int width = 0, height = 0;              // error view: the camera image it measures (0: 640 x 640 / aspect)
     AliasingShown aliasing = AliasingShown::total;  // error view: the heat map's quantity
-    ErrorShown error = ErrorShown::automatic;       // error view: verdicts or signed visibility error
+    ErrorShown error = ErrorShown::automatic;       // error view: verdicts, signed visibility error or causes
     TextureShown texture = TextureShown::depth;     // shadow map view: depth or the moments VSM reads
 };
 
