@@ -37,17 +37,11 @@ const bool kRegistered = [] {
                                          std::map<std::string, std::string>{})
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
-    for (DepthEncoding encoding : depth_encodings())
-        for (const char* reversed : {"off", "on"}) {
-            const std::map<std::string, std::string> format{{"depth_format", to_string(encoding)},
-                                                            {"depth_reversed", reversed}};
-            const std::string name =
-                describe(DepthFormat{.encoding = encoding, .reversed = reversed == std::string("on")});
-            benchmark::RegisterBenchmark(("depth_raster_format/focused/" + name).c_str(), depth_raster, "focused",
-                                         format)
-                ->Unit(benchmark::kMillisecond)
-                ->UseRealTime();
-        }
+    for (const DepthFormat& format : depth_formats())
+        benchmark::RegisterBenchmark(("depth_raster_format/focused/" + describe(format)).c_str(), depth_raster,
+                                     "focused", depth_format_settings(format))
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
     return true;
 }();
 

@@ -19,14 +19,6 @@ using namespace shadowlab;
 
 namespace {
 
-// Every encoding, plain and reversed.
-std::vector<DepthFormat> all_formats() {
-    std::vector<DepthFormat> formats;
-    for (DepthEncoding encoding : depth_encodings())
-        for (bool reversed : {false, true}) formats.push_back({.encoding = encoding, .reversed = reversed});
-    return formats;
-}
-
 // Depths over [0, 1]: the ends, values next to them, and random ones between.
 std::vector<double> depths_to_try() {
     std::vector<double> depths{0.0, 1e-9, 1e-6, 0.25, 0.5, 0.75, 1.0 - 1e-6, 1.0 - 1e-9, 1.0};
@@ -84,7 +76,7 @@ TEST(DepthFormat, Float32ReversedIsFineNearTheFarEndWherePlainFloat32IsCoarse) {
 // against the depth; and it lies within half a step of it.
 TEST(DepthFormat, StoredDepthIsIdempotentMonotonicAndWithinHalfAStep) {
     const std::vector<double> depths = depths_to_try();
-    for (const DepthFormat& format : all_formats()) {
+    for (const DepthFormat& format : depth_formats()) {
         double before = -1.0;
         for (double d : depths) {
             const double stored = stored_depth(format, d);
@@ -99,7 +91,7 @@ TEST(DepthFormat, StoredDepthIsIdempotentMonotonicAndWithinHalfAStep) {
 // The codes order as the depths they stand for (plain) or against them (reversed), so that the
 // rasterizer keeps the nearest by comparing codes; nothing drawn is d = 1 in every format.
 TEST(DepthFormat, CodesOrderAsTheStoredValuesAndTheFarCodeIsDepthOne) {
-    for (const DepthFormat& format : all_formats()) {
+    for (const DepthFormat& format : depth_formats()) {
         const DepthDecoder decode(format);
         EXPECT_EQ(decode(far_code(format)), 1.0) << describe(format);
         const DepthCode near = depth_code(format, format_value(format, 0.2));
@@ -143,7 +135,7 @@ TEST(DepthFormatRaster, APlaneStoresExactlyTheFormatsDepthOfIt) {
     WorldTriangles plane;
     add_square(plane, -2.0, 2.0, -2.0, 2.0, 1.2345, 0);
     const double d = world_to_uvz(setup.maps[0], {0.0, 1.2345, 0.0}).z;
-    for (const DepthFormat& format : all_formats()) {
+    for (const DepthFormat& format : depth_formats()) {
         const DepthMap map = rasterize_depth(plane, {true}, setup, kResolution, format);
         EXPECT_EQ(map.format, format);
         int covered = 0;
@@ -189,7 +181,7 @@ TEST(DepthFormatRaster, TheNearestCasterIsKeptInEveryFormat) {
     WorldTriangles stacked;
     add_square(stacked, -2.0, 2.0, -2.0, 2.0, height_of_depth(0.6), 0);
     add_square(stacked, -1.0, 1.0, -1.0, 1.0, height_of_depth(0.3), 0);
-    for (const DepthFormat& format : all_formats()) {
+    for (const DepthFormat& format : depth_formats()) {
         const DepthMap map = rasterize_depth(stacked, {true}, setup, kResolution, format);
         EXPECT_EQ(map.at(16, 16), stored_depth(format, world_to_uvz(setup.maps[0], {0, height_of_depth(0.3), 0}).z))
             << describe(format);

@@ -117,6 +117,10 @@ SettingSpec lookup_setting_defaulting_to(const std::string& name, const std::str
     throw std::invalid_argument("no lookup setting named " + name);
 }
 
+std::map<std::string, std::string> depth_format_settings(const DepthFormat& format) {
+    return {{"depth_format", to_string(format.encoding)}, {"depth_reversed", format.reversed ? "on" : "off"}};
+}
+
 ShadowLookup lookup_from(const Settings& s, double constant_bias) {
     ShadowLookup lookup{.filter = {.kind = filter_named(s.choice("filter")).name,
                                    .kernel = enum_named<PcfKernel>(

@@ -2,6 +2,7 @@
 // The settings every map method shares, beside its own: the filter and the depth bias its lookups
 // apply, and the depth format its maps are stored in. The registry appends them to each map method's list, so that the
 // CLI (--set filter=pcss), the window's controls and the tests read one declaration.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ SettingSpec kernel_size_setting();
 // One of them with another default: a method whose maps read best with it declares it among its own
 // settings, and the registry then leaves the shared one out.
 SettingSpec lookup_setting_defaulting_to(const std::string& name, const std::string& default_value);
+
+// The settings (key -> text) that ask for a depth format: depth_format and depth_reversed.
+std::map<std::string, std::string> depth_format_settings(const DepthFormat& format);
 
 // The lookup the settings ask for. `constant_bias` >= 0 (the CLI's --bias B) replaces the bias
 // settings with that constant alone. Throws std::invalid_argument naming the setting for a

@@ -17,6 +17,13 @@ std::vector<DepthEncoding> depth_encodings() {
     return {DepthEncoding::float32, DepthEncoding::unorm24, DepthEncoding::unorm16};
 }
 
+std::vector<DepthFormat> depth_formats() {
+    std::vector<DepthFormat> formats;
+    for (DepthEncoding encoding : depth_encodings())
+        for (bool reversed : {false, true}) formats.push_back({.encoding = encoding, .reversed = reversed});
+    return formats;
+}
+
 std::string describe(const DepthFormat& format) {
     return std::string(to_string(format.encoding)) + (format.reversed ? " reversed" : "");
 }

@@ -25,6 +25,8 @@ struct DepthFormat {
 
     bool operator==(const DepthFormat&) const = default;
 };
+// Every format: each encoding (depth_encodings' order) plain, then reversed.
+std::vector<DepthFormat> depth_formats();
 
 // "unorm16", "float32 reversed", ...
 std::string describe(const DepthFormat& format);
