@@ -83,6 +83,7 @@ Json to_json(const Measurement& m) {
                 {"m_perspective", to_json(e.m_perspective)},
                 {"m_projection", to_json(e.m_projection)},
                 {"depth_step", to_json(e.depth_step)},
+                {"depth_format", m.geometry ? Json(nullptr) : Json(describe(m.lookup.format))},
                 {"setup_ms", m.setup_ms},
                 {"raster_ms", m.raster_ms},
                 {"fallback", m.fallbacks.empty() ? Json(nullptr) : Json(describe(m.fallbacks))},
@@ -136,8 +137,8 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
     else
         std::cout << "  m (texel extent in pixels): " << e.m
                   << "\n    perspective factor (the parameterization's part): " << e.m_perspective
-                  << "\n    projection factor (the surface's tilt): " << e.m_projection
-                  << "\n  depth step of a 24-bit map (world units): " << e.depth_step << "\n";
+                  << "\n    projection factor (the surface's tilt): " << e.m_projection << "\n  depth step of the "
+                  << describe(m.lookup.format) << " map (world units): " << e.depth_step << "\n";
     if (m.by_map) {
         for (size_t k = 0; k < m.by_map->maps.size(); ++k) {
             const MapShare& share = m.by_map->maps[k];

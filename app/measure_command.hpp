@@ -27,7 +27,7 @@ struct MeasureOptions {
 void run_measure(const MeasureOptions& options);
 
 // Shared with `bench` and `sweep`. A technique's JSON has the map keys (resolution 0, m and
-// depth_step 0: no texels; bias null) and "polygons", "fill_mean", "fill_max"; "fallback" is the
+// depth_step 0: no texels; bias and depth_format null) and "polygons", "fill_mean", "fill_max"; "fallback" is the
 // fallbacks as one line (null for none), "fallbacks" and "limits" list them by kind.
 Json to_json(const Measurement& measurement);
 // measure's "diagnosis": {"misclassified_pixels", "causes": [{"kind", "pixels", "share", "remedy":

@@ -23,6 +23,11 @@ struct FilterScene {
     std::vector<Receiver> receivers;
 };
 
+ShadowLookup lookup_with(const std::map<std::string, std::string>& overrides) {
+    const Method& focused = method_or_throw("focused");
+    return lookup_from(resolve_settings("focused", focused.settings, overrides));
+}
+
 const FilterScene& filter_scene() {
     static const FilterScene s = [] {
         FilterScene f;
@@ -32,7 +37,7 @@ const FilterScene& filter_scene() {
         f.setup =
             focused.compute_maps(gather_inputs(f.scene), resolve_settings("focused", focused.settings, {}), nullptr);
         const WorldTriangles triangles = tessellate(f.scene);
-        f.depth = rasterize_depth(triangles, caster_flags(f.scene), f.setup, kResolution);
+        f.depth = rasterize_depth(triangles, caster_flags(f.scene), f.setup, kResolution, lookup_with({}).format);
         const ReferenceImage ref = exact_reference(f.scene, triangles, kWidth, kHeight);
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x)
@@ -41,11 +46,6 @@ const FilterScene& filter_scene() {
         return f;
     }();
     return s;
-}
-
-ShadowLookup lookup_with(const std::map<std::string, std::string>& overrides) {
-    const Method& focused = method_or_throw("focused");
-    return lookup_from(resolve_settings("focused", focused.settings, overrides));
 }
 
 void lookups(benchmark::State& state, const std::map<std::string, std::string>& overrides) {

@@ -22,7 +22,7 @@ void inspection(benchmark::State& state, const std::string& method, bool with_de
     request.resolution = 2048;
     for (auto _ : state) {
         const Inspection in = inspect_scene(default_scene(), request);
-        if (with_depth_map) benchmark::DoNotOptimize(in.depth().depth.data());
+        if (with_depth_map) benchmark::DoNotOptimize(in.depth().codes.data());
         benchmark::DoNotOptimize(in);
     }
 }

@@ -229,9 +229,9 @@ TEST(MomentMap, TheBlurStaysInsideEachTile) {
     setup.maps.resize(2);
     setup.maps[0].viewport = {0.0, 0.0, 0.5, 1.0};
     setup.maps[1].viewport = {0.5, 0.0, 1.0, 1.0};
-    DepthMap depth{16, std::vector<float>(256, 0.25f)};
+    DepthMap depth(16, {});
     for (int y = 0; y < 16; ++y)
-        for (int x = 8; x < 16; ++x) depth.depth[size_t(y) * 16 + x] = 0.75f;
+        for (int x = 0; x < 16; ++x) depth.set(x, y, x < 8 ? 0.25 : 0.75);
     const MomentMap moments = blurred_moments(depth, setup, {.kind = "vsm", .kernel_size = 5});
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x) {
@@ -250,8 +250,9 @@ TEST(MomentMap, TheBlurIsTheClampedBoxAverage) {
     setup.maps[0].viewport = {0.25, 0.0, 0.75, 0.5};  // texels 4..11 x 0..7 of 16
     std::mt19937 random(5);
     std::uniform_real_distribution<float> depth01(0.0f, 1.0f);
-    DepthMap depth{16, std::vector<float>(256)};
-    for (float& d : depth.depth) d = depth01(random);
+    DepthMap depth(16, {});
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) depth.set(x, y, depth01(random));
     for (int side : {1, 2, 3, 4}) {
         const MomentMap moments = blurred_moments(depth, setup, {.kind = "vsm", .kernel_size = side});
         const int before = side / 2, after = side - 1 - before;
@@ -302,5 +303,21 @@ TEST(LookupSettings, BadSettingsAreRefusedByName) {
     EXPECT_TRUE(refused({{"bias_constant", "-1"}}, "bias_constant"));
     EXPECT_TRUE(refused({{"filter", "vsm"}, {"filter_world_radius", "0.5"}}, "filter_world_radius"));
     EXPECT_TRUE(refused({{"filter", "blur"}}, "filter"));
+    EXPECT_TRUE(refused({{"depth_format", "unorm32"}}, "depth_format"));
+    EXPECT_TRUE(refused({{"depth_reversed", "yes"}}, "depth_reversed"));
     EXPECT_NO_THROW(lookup_from(focused_with({{"evsm_positive", "44.36"}})));
+}
+
+// The depth format is a lookup setting: float32, not reversed, unless the settings say otherwise,
+// and every filter reads it (it sits with the biases).
+TEST(LookupSettings, TheDepthFormatSettingsReachTheLookup) {
+    EXPECT_EQ(lookup_from(focused_with({})).format, DepthFormat{});
+    EXPECT_EQ(lookup_from(focused_with({{"depth_format", "unorm16"}})).format,
+              (DepthFormat{.encoding = DepthEncoding::unorm16}));
+    EXPECT_EQ(lookup_from(focused_with({{"depth_format", "unorm24"}, {"depth_reversed", "on"}})).format,
+              (DepthFormat{.encoding = DepthEncoding::unorm24, .reversed = true}));
+    EXPECT_EQ(lookup_from(focused_with({{"depth_reversed", "on"}}), 0.01).format, (DepthFormat{.reversed = true}))
+        << "a constant --bias replaces the biases, not the format";
+    EXPECT_TRUE(filters_reading("depth_format").empty());
+    EXPECT_TRUE(is_lookup_setting("depth_reversed"));
 }

@@ -228,7 +228,7 @@ TEST(MapBlend, AmountCrossfadesTheTwoVerdicts) {
     const DepthMap depth = rasterize_depth(half_plane_caster(), {true}, setup, 64);
     DepthMap only_map_0_sees_it = depth;  // map 1's tile (the texture's right half, top) emptied
     for (int y = 0; y < 32; ++y)
-        for (int x = 32; x < 64; ++x) only_map_0_sees_it.depth[size_t(y) * 64 + x] = 1.0f;
+        for (int x = 32; x < 64; ++x) only_map_0_sees_it.set(x, y, 1.0);
     for (double x : {-0.5, 0.3, 0.75, 1.2}) {
         const glm::dvec3 p(x, 0, -1);
         const double w = blend_of(setup, p).weight;

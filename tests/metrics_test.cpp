@@ -125,15 +125,30 @@ TEST(Metrics, MisclassificationIsSmallAndSplitByKind) {
     EXPECT_GT(coarse.false_light, coarse.false_shadow);
 }
 
-TEST(Metrics, DepthStepOfAnOrthographicMapIsItsDepthRangeOver2To24) {
+// The depth step `measure` reports is one step of the map's depth format (the depth_format setting)
+// in world units along the light: an N-bit unorm's 1 / (2^N − 1) of the map's depth range at every
+// pixel, so that unorm16's is 256 times unorm24's; float32's is its spacing at each pixel's depth,
+// at most 2^-24 of the range (on the ground, at the far end), far less on the box's top near d = 0.
+TEST(Metrics, DepthStepOfAnOrthographicMapIsItsDepthRangeOverTheFormatsLevels) {
     const Scene scene = overhead_scene();
     const Method& uniform = *find_method("uniform");
     const ShadowMap map =
         uniform.compute_maps(gather_inputs(scene), resolve_settings("uniform", {}, {}), nullptr).maps[0];
     // The uniform map's depth spans the scene's height (the box: 4 units) over [0, 1].
     EXPECT_NEAR(world_per_depth_unit(map, scene.light.direction, {10, 0, 10}), 4.0, 1e-9);
-    const ShadowError e = measure(scene, "uniform", 256, 81);
-    EXPECT_NEAR(e.depth_step.mean, 4.0 / 16777216.0, 1e-15);
+    const MeasureContext context = prepare_measurement(scene, 81, 81);
+    const auto depth_step_in = [&](const std::string& format) {
+        const Settings settings = resolve_settings("uniform", uniform.settings, {{"depth_format", format}});
+        return shadowlab::measure(context, uniform, settings, 256, 0.05).error.depth_step;
+    };
+    const AliasingStats unorm16 = depth_step_in("unorm16"), unorm24 = depth_step_in("unorm24"),
+                        float32 = depth_step_in("float32");
+    EXPECT_NEAR(unorm24.mean, 4.0 / 16777215.0, 1e-15);
+    EXPECT_NEAR(unorm24.max, 4.0 / 16777215.0, 1e-15);
+    EXPECT_NEAR(unorm16.mean, 4.0 / 65535.0, 1e-12);
+    EXPECT_NEAR(unorm16.mean / unorm24.mean, 256.0, 0.01);
+    EXPECT_NEAR(float32.max, 4.0 / 16777216.0, 1e-15);
+    EXPECT_LT(float32.mean, 0.99 * float32.max) << "the box's top, near d = 0, is finer";
 }
 
 TEST(Metrics, MethodsRankAsTheLiteratureSaysUnderAnOverheadLight) {

@@ -251,11 +251,12 @@ TEST(SplitForParaboloid, RasterApproachesTheTracedDepth) {
     };
     const auto wrong_texels = [&](const DepthMap& drawn) {
         Wrong wrong;
-        for (std::size_t i = 0; i < exact.depth.size(); ++i) {
-            const bool drawn_covers = drawn.depth[i] < 1.0f, exact_covers = exact.depth[i] < 1.0f;
-            wrong.coverage += drawn_covers != exact_covers;
-            wrong.depth += drawn_covers && exact_covers && std::abs(drawn.depth[i] - exact.depth[i]) > 0.01f;
-        }
+        for (int y = 0; y < resolution; ++y)
+            for (int x = 0; x < resolution; ++x) {
+                const bool drawn_covers = drawn.at(x, y) < 1.0, exact_covers = exact.at(x, y) < 1.0;
+                wrong.coverage += drawn_covers != exact_covers;
+                wrong.depth += drawn_covers && exact_covers && std::abs(drawn.at(x, y) - exact.at(x, y)) > 0.01;
+            }
         return wrong;
     };
     const Wrong straight = wrong_texels(rasterize_depth(triangles, casts, setup, resolution));

@@ -107,3 +107,31 @@ TEST(ProjectionKinds, TheDerivativesAreThoseOfTheMapping) {
         }
     }
 }
+
+// A reversed-Z format draws each map's reversed depth: the same (u, v), its depth s = 1 − d.
+TEST(ProjectionKinds, TheReversedDepthIsOneMinusTheDepthFromTheKindsOwnTerms) {
+    for (Projection projection : projection_kinds()) {
+        const ShadowMap map = map_of(projection), reversed = with_reversed_depth(map);
+        const ProjectionKind& kind = projection_kind(map);
+        EXPECT_EQ(reversed.projection, map.projection) << kind.name;
+        EXPECT_EQ(reversed.viewport, map.viewport) << kind.name;
+        for (const glm::dvec3& uvz : unit_cube_points()) {
+            const glm::dvec3 world = kind.world_of(map, uvz);
+            const glm::dvec3 plain = world_to_uvz(map, world), flipped = world_to_uvz(reversed, world);
+            EXPECT_NEAR(glm::distance(glm::dvec2(flipped), glm::dvec2(plain)), 0.0, 1e-12) << kind.name;
+            EXPECT_NEAR(flipped.z, 1.0 - plain.z, 1e-12) << kind.name;
+        }
+    }
+}
+
+// From the kind's own terms, not 1 − d after the fact: a paraboloid's s = (|q| − far) / (near − far)
+// is exact to the last bit a hair before its far end (|q| − far is exact there), where 1 − d would
+// keep only the bits of d's rounding, 1e-16 of an s of 1e-10.
+TEST(ProjectionKinds, AParaboloidsReversedDepthKeepsItsPrecisionNearTheFarEnd) {
+    const ShadowMap map = map_of(Projection::paraboloid);
+    const double before_far = std::ldexp(1.0, -30);  // the range is 10 units: s = before_far / 10
+    const glm::dvec3 p = kLight + glm::dvec3(0.0, -(map.paraboloid.far - before_far), 0.0);  // on the frame's +z
+    const double s = world_to_uvz(with_reversed_depth(map), p).z;
+    EXPECT_NEAR(s, before_far / 10.0, 1e-25);
+    EXPECT_GT(std::abs((1.0 - world_to_uvz(map, p).z) - before_far / 10.0), 1e-25) << "1 − d loses it";
+}

@@ -98,7 +98,7 @@ RayHit intersect(const glm::dvec3& direction, const glm::dvec3& a, const glm::dv
 TEST(RasterOrthographic, SquareCoversExactlyTheTexelsWhoseCentresItContains) {
     const double x0 = -1.3, x1 = 1.1, z0 = -0.7, z1 = 2.1;  // edges 21.6, 40.8, 26.4, 48.8 texels: off centres
     const DepthMap map = rasterize_depth(square(x0, x1, z0, z1, 1.0), {true}, one_map(overhead_map()), kResolution);
-    ASSERT_EQ(map.depth.size(), static_cast<std::size_t>(kResolution * kResolution));
+    ASSERT_EQ(map.codes.size(), static_cast<std::size_t>(kResolution * kResolution));
     for (int y = 0; y < kResolution; ++y)
         for (int x = 0; x < kResolution; ++x) {
             const double wx = world_of(texel_centre(x)), wz = world_of(texel_centre(y));
@@ -220,7 +220,9 @@ TEST(RasterLookup, ShadowedUnderTheCasterLitBesideItAndTheBiasMovesTheDecision) 
 
 TEST(RasterLookup, PointsOffTheMapAreLit) {
     // Every texel holds depth 0: any point the lookup places on the map is shadowed.
-    const DepthMap full{kResolution, std::vector<float>(kResolution * kResolution, 0.0f)};
+    DepthMap full(kResolution, {});
+    for (int y = 0; y < kResolution; ++y)
+        for (int x = 0; x < kResolution; ++x) full.set(x, y, 0.0);
     const ShadowMap spot = spot_map();
     EXPECT_TRUE(in_shadow(full, one_map(spot), {0.0, 0.0, -2.0}, 0.0));
     EXPECT_FALSE(in_shadow(full, one_map(spot), {-0.5, 0.5, 1.0}, 0.0));  // behind the light: w < 0, u, v inside
@@ -249,7 +251,7 @@ bool holds(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
 // Every texel centre of the map's tile tested against every triangle (each wholly in front of the
 // map, w > 0, so that nothing but the tile clips it), depth by barycentric weights, the least kept.
 DepthMap brute_force_depth(const WorldTriangles& triangles, const ShadowMap& map, int resolution) {
-    DepthMap out{resolution, std::vector<float>(static_cast<std::size_t>(resolution) * resolution, 1.0f)};
+    DepthMap out(resolution, {});
     const glm::ivec2 first = texel_of(map, glm::dvec2(0.0), resolution),
                      last = texel_of(map, glm::dvec2(1.0), resolution);
     for (const std::array<int, 3>& corners : triangles.triangles) {
@@ -275,8 +277,7 @@ DepthMap brute_force_depth(const WorldTriangles& triangles, const ShadowMap& map
                     (edge_value(p[1], p[2], centre) * depth[0] + edge_value(p[2], p[0], centre) * depth[1] +
                      edge_value(p[0], p[1], centre) * depth[2]) /
                     area;
-                float& texel = out.depth[static_cast<std::size_t>(y) * resolution + x];
-                texel = std::min(texel, static_cast<float>(std::max(0.0, d)));
+                out.set(x, y, std::min(out.at(x, y), std::max(0.0, d)));
             }
     }
     return out;
@@ -284,7 +285,7 @@ DepthMap brute_force_depth(const WorldTriangles& triangles, const ShadowMap& map
 
 // The same texels covered, and the same depths but for the float rounding of the interpolation.
 void expect_same_map(const DepthMap& actual, const DepthMap& expected) {
-    ASSERT_EQ(actual.depth.size(), expected.depth.size());
+    ASSERT_EQ(actual.codes.size(), expected.codes.size());
     for (int y = 0; y < actual.resolution; ++y)
         for (int x = 0; x < actual.resolution; ++x) {
             ASSERT_EQ(covered(actual, x, y), covered(expected, x, y)) << x << ", " << y;

@@ -11,10 +11,21 @@ namespace {
 constexpr int kMaxKernelSide = 9;  // 81 taps: the GPU pass's Poisson array holds as many
 
 template <class Enum>
-Enum enum_named(const std::string& name, std::initializer_list<Enum> values) {
+Enum enum_named(const std::string& name, const std::vector<Enum>& values) {
     for (Enum e : values)
         if (name == to_string(e)) return e;
     throw std::invalid_argument("unknown choice " + name);  // resolve_settings has refused it already
+}
+
+// The depth format setting: every encoding's name, the first (float32) the default.
+SettingSpec depth_format_setting() {
+    SettingSpec spec{.name = "depth_format",
+                     .description =
+                         "how the map stores its depth: float32 (32-bit float), unorm24 or unorm16 "
+                         "(24- or 16-bit fixed point, steps of 1/(2^N − 1))"};
+    for (DepthEncoding encoding : depth_encodings()) spec.choices.push_back(to_string(encoding));
+    spec.default_value = spec.choices.at(0);
+    return spec;
 }
 
 }  // namespace
@@ -74,6 +85,12 @@ std::vector<SettingSpec> lookup_settings() {
          .choices = {"off", "on"}},
     };
     specs.insert(specs.end(), bias.begin(), bias.end());
+    specs.push_back(depth_format_setting());
+    specs.push_back({.name = "depth_reversed",
+                     .description = "reversed Z: the map stores 1 − depth (the far plane at 0), where float32 is "
+                                    "finest toward the far end",
+                     .default_value = "off",
+                     .choices = {"off", "on"}});
     return specs;
 }
 
@@ -100,22 +117,28 @@ SettingSpec lookup_setting_defaulting_to(const std::string& name, const std::str
     throw std::invalid_argument("no lookup setting named " + name);
 }
 
+std::map<std::string, std::string> depth_format_settings(const DepthFormat& format) {
+    return {{"depth_format", to_string(format.encoding)}, {"depth_reversed", format.reversed ? "on" : "off"}};
+}
+
 ShadowLookup lookup_from(const Settings& s, double constant_bias) {
-    ShadowLookup lookup{
-        .filter = {.kind = filter_named(s.choice("filter")).name,
-                   .kernel = enum_named(s.choice("pcf_kernel"), {PcfKernel::box, PcfKernel::tent, PcfKernel::poisson}),
-                   .kernel_size = int(s.number("kernel_size")),
-                   .radius_texels = s.number("filter_radius"),
-                   .radius_world = s.number("filter_world_radius"),
-                   .min_variance = s.number("min_variance"),
-                   .bleed_reduction = s.number("bleed_reduction"),
-                   .evsm_positive = s.number("evsm_positive"),
-                   .evsm_negative = s.number("evsm_negative"),
-                   .settings = s},
-        .bias = {.constant = s.number("bias_constant"),
-                 .slope_scale = s.number("bias_slope"),
-                 .normal_offset = s.number("bias_normal"),
-                 .receiver_plane = s.choice("bias_receiver_plane") == "on"}};
+    ShadowLookup lookup{.filter = {.kind = filter_named(s.choice("filter")).name,
+                                   .kernel = enum_named<PcfKernel>(
+                                       s.choice("pcf_kernel"), {PcfKernel::box, PcfKernel::tent, PcfKernel::poisson}),
+                                   .kernel_size = int(s.number("kernel_size")),
+                                   .radius_texels = s.number("filter_radius"),
+                                   .radius_world = s.number("filter_world_radius"),
+                                   .min_variance = s.number("min_variance"),
+                                   .bleed_reduction = s.number("bleed_reduction"),
+                                   .evsm_positive = s.number("evsm_positive"),
+                                   .evsm_negative = s.number("evsm_negative"),
+                                   .settings = s},
+                        .bias = {.constant = s.number("bias_constant"),
+                                 .slope_scale = s.number("bias_slope"),
+                                 .normal_offset = s.number("bias_normal"),
+                                 .receiver_plane = s.choice("bias_receiver_plane") == "on"},
+                        .format = {.encoding = enum_named(s.choice("depth_format"), depth_encodings()),
+                                   .reversed = s.choice("depth_reversed") == "on"}};
     if (double(lookup.filter.kernel_size) != s.number("kernel_size"))
         throw std::invalid_argument("setting kernel_size=" + std::to_string(s.number("kernel_size")) +
                                     ": expected a whole number of taps");

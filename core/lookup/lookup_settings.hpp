@@ -1,13 +1,15 @@
 #pragma once
 // The settings every map method shares, beside its own: the filter and the depth bias its lookups
-// apply. The registry appends them to each map method's list, so that the CLI (--set filter=pcss),
-// the window's controls and the tests read one declaration.
+// apply, and the depth format its maps are stored in. The registry appends them to each map method's list, so that the
+// CLI (--set filter=pcss), the window's controls and the tests read one declaration.
+#include <map>
 #include <string>
 #include <vector>
 
 #include "lookup/depth_bias.hpp"
 #include "lookup/shadow_filter.hpp"
 #include "methods/settings.hpp"
+#include "raster/depth_format.hpp"
 
 namespace shadowlab {
 
@@ -15,14 +17,16 @@ namespace shadowlab {
 struct ShadowLookup {
     ShadowFilter filter;
     DepthBias bias;
+    DepthFormat format;  // how the maps store their depth: every raster for this lookup draws in it
 };
 
-// Every filter's settings (the filter, then each filter's own, in the filters' order) and the depth
-// bias's. A filter registered later adds its own.
+// Every filter's settings (the filter, then each filter's own, in the filters' order), the depth
+// bias's and the depth format's (depth_format, depth_reversed). A filter registered later adds its own.
 std::vector<SettingSpec> lookup_settings();
 
 // Whether `name` is one of lookup_settings(), and of those, the filters that read a filter setting
-// ("kernel_size": pcf, vsm, evsm, pcss); empty for a depth-bias setting, which every filter reads.
+// ("kernel_size": pcf, vsm, evsm, pcss); empty for a depth-bias or depth-format setting, which every
+// filter reads.
 bool is_lookup_setting(const std::string& name);
 std::vector<std::string> filters_reading(const std::string& setting);
 
@@ -32,6 +36,9 @@ SettingSpec kernel_size_setting();
 // One of them with another default: a method whose maps read best with it declares it among its own
 // settings, and the registry then leaves the shared one out.
 SettingSpec lookup_setting_defaulting_to(const std::string& name, const std::string& default_value);
+
+// The settings (key -> text) that ask for a depth format: depth_format and depth_reversed.
+std::map<std::string, std::string> depth_format_settings(const DepthFormat& format);
 
 // The lookup the settings ask for. `constant_bias` >= 0 (the CLI's --bias B) replaces the bias
 // settings with that constant alone. Throws std::invalid_argument naming the setting for a

@@ -44,9 +44,10 @@ void blur_along(std::vector<glm::dvec4>& texels, int resolution, glm::ivec2 firs
 
 MomentMap blurred_moments(const DepthMap& depth, const ShadowSetup& setup, const ShadowFilter& filter) {
     const int n = depth.resolution;
-    std::vector<glm::dvec4> texels(depth.depth.size());
+    std::vector<glm::dvec4> texels(depth.codes.size());
     const Moments kind = filter_of(filter).moments;
-    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = moments_of(depth.depth[i], kind, filter);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) texels[depth.index(x, y)] = moments_of(depth.at(x, y), kind, filter);
     for (const ShadowMap& map : setup.maps) {
         const glm::ivec2 first = texel_of(map, glm::dvec2(0.0), n), last = texel_of(map, glm::dvec2(1.0), n);
         blur_along(texels, n, first, last, 0, filter.kernel_size);

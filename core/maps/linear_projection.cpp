@@ -14,6 +14,14 @@ glm::dvec3 world_of(const ShadowMap& map, const glm::dvec3& uvz) {
     return glm::dvec3(h) / h.w;
 }
 
+// s = 1 − d_pre / w = (w − d_pre) / w: the depth row replaced by the combined row, w's less d_pre's.
+ShadowMap reversed_depth(const ShadowMap& map) {
+    ShadowMap reversed = map;
+    for (int column = 0; column < 4; ++column)
+        reversed.world_to_uvz[column][2] = map.world_to_uvz[column][3] - map.world_to_uvz[column][2];
+    return reversed;
+}
+
 // (u, v) = h.xy / h.w with h = M (p, 1); along the direction h changes by M (direction, 0).
 glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::dvec3& direction) {
     const glm::dvec4 h = map.world_to_uvz * glm::dvec4(p, 1.0);
@@ -44,6 +52,7 @@ constexpr ProjectionKind linear_kind(const char* name, bool numbered_face) {
     return {.name = name,
             .homogeneous = homogeneous,
             .world_of = world_of,
+            .reversed_depth = reversed_depth,
             .clip_distance = nullptr,
             .edge_sagitta = nullptr,
             .uv_derivative = uv_derivative,

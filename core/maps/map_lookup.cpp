@@ -61,6 +61,8 @@ glm::dvec4 map_homogeneous(const ShadowMap& map, const glm::dvec3& world) {
     return projection_kind(map).homogeneous(map, world);
 }
 
+ShadowMap with_reversed_depth(const ShadowMap& map) { return projection_kind(map).reversed_depth(map); }
+
 glm::dvec3 world_to_uvz(const ShadowMap& map, const glm::dvec3& world) {
     const glm::dvec4 h = map_homogeneous(map, world);
     return glm::dvec3(h) / h.w;

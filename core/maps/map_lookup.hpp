@@ -14,6 +14,10 @@ namespace shadowlab {
 // (u, v, d, 1) for a paraboloid (w = 0 at the point straight behind it, where the map is singular).
 glm::dvec4 map_homogeneous(const ShadowMap& map, const glm::dvec3& world);
 
+// The map with its depth reversed, s = 1 − d, from its kind's own terms (ProjectionKind::reversed_depth):
+// what a reversed-Z depth format draws with.
+ShadowMap with_reversed_depth(const ShadowMap& map);
+
 // (u, v, d) of a world point under one map, after the division by w.
 glm::dvec3 world_to_uvz(const ShadowMap& map, const glm::dvec3& world);
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <utility>
 
 namespace shadowlab {
 namespace {
@@ -106,6 +107,13 @@ double distance_back_to_depth(const ShadowMap& map, const glm::dvec3& l, const g
     return (uvz_of(map, p).z - depth) * (map.paraboloid.far - map.paraboloid.near);
 }
 
+// s = 1 − (|q| − near) / (far − near) = (|q| − far) / (near − far): near and far swapped.
+ShadowMap reversed_depth(const ShadowMap& map) {
+    ShadowMap reversed = map;
+    std::swap(reversed.paraboloid.near, reversed.paraboloid.far);
+    return reversed;
+}
+
 std::vector<NamedValue> parameters(const ShadowMap& map) {
     const Paraboloid& p = map.paraboloid;
     return {
@@ -117,6 +125,7 @@ std::vector<NamedValue> parameters(const ShadowMap& map) {
 constinit const ProjectionKind paraboloid_projection{.name = "paraboloid",
                                                      .homogeneous = homogeneous,
                                                      .world_of = world_of,
+                                                     .reversed_depth = reversed_depth,
                                                      .clip_distance = clip_distance,
                                                      .edge_sagitta = uv_sagitta,
                                                      .fills_disc = true,

@@ -21,6 +21,10 @@ struct ProjectionKind {
     glm::dvec4 (*homogeneous)(const ShadowMap& map, const glm::dvec3& world);
     // The inverse: the world point at (u, v, d).
     glm::dvec3 (*world_of)(const ShadowMap& map, const glm::dvec3& uvz);
+    // The same map with its depth reversed, s = 1 − d (a reversed-Z depth format,
+    // raster/depth_format.hpp), from the kind's own terms: never 1 − d after the division, which
+    // cancels where d nears 1 and loses the precision reversed Z is for.
+    ShadowMap (*reversed_depth)(const ShadowMap& map);
 
     // The rasterization clip besides w > 0 and the unit square: the signed distance to the plane a
     // caster is cut at (>= 0: drawn), interpolated along the projected edges as gl_ClipDistance does;

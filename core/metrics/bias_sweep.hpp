@@ -47,8 +47,10 @@ std::map<std::string, std::string> bias_sweep_settings(const std::map<std::strin
 //                  receiver, which a focused map's texels never exceed (it holds less of the scene).
 //                  Acne needs a bias of about a texel's width times tan θ (θ between surface and
 //                  light), up to ~114 widths at a 0.5° sun, so the ladder brackets it at any
-//                  resolution. (The measured depth_step is a 24-bit depth step, not a texel's
-//                  width: it sizes quantization, 2^-24 of the depth range, far below any acne.)
+//                  resolution. (The measured depth_step is one step of the map's depth format,
+//                  not a texel's width: it sizes quantization, 2^-24 of the depth range for
+//                  float32 near the far end or unorm24, far below any acne; unorm16's 2^-16 can
+//                  reach it over a deep range.)
 std::vector<double> default_bias_values(const MeasureContext& context, const std::string& bias_setting, int resolution);
 
 // `method` (a map method) measured at `resolution` with bias_sweep_settings(overrides, bias_setting)

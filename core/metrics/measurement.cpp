@@ -42,10 +42,10 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     const ShadowSetup setup = timed_setup(c, method, settings, m.setup_ms);
     m.fallbacks = setup.fallbacks;
     for (const ShadowMap& map : setup.maps) m.texels_used += std::pow(tile_resolution(map, resolution), 2);
-    const Stopwatch raster_watch;
-    const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
-    m.raster_ms = raster_watch.ms();
     m.lookup = lookup_from(settings, bias);
+    const Stopwatch raster_watch;
+    const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution, m.lookup.format);
+    m.raster_ms = raster_watch.ms();
     const ShadowReader reader(setup, depth, c.scene.light, m.lookup);
     m.prefilter_ms = reader.prefilter_ms();
     LookupCount count;

@@ -26,8 +26,6 @@ glm::dvec3 along_light(const Light& light, const glm::dvec3& p) {
 
 namespace {
 
-constexpr double kDepthBufferSteps = 16777216.0;  // a 24-bit depth buffer
-
 // Faces turned from the light (or edge-on to it) are dark by shading whatever a map says: only
 // pixels of receivers that face the light are judged.
 constexpr float kMinFacing = 1e-3f;
@@ -98,6 +96,12 @@ PixelAliasing pixel_aliasing(const Scene& scene, const ReferenceImage& ref, cons
                                             along_ray_onto_plane(camera, ref.position[down], p, halfway));
     if (perspective <= 0.0) return {m, 0.0, 0.0};
     return {m, perspective, m / perspective};
+}
+
+// The world distance along the light that one step of the map's depth format stands for at p: the
+// format's step at p's depth (raster/depth_format.hpp) in world units per unit of depth.
+double world_depth_step(const ShadowMap& map, const DepthFormat& format, const glm::dvec3& l, const glm::dvec3& p) {
+    return world_per_depth_unit(map, l, p) * depth_step(format, world_to_uvz(map, p).z);
 }
 
 ShadowError unjudged(const ReferenceImage& ref) {
@@ -179,7 +183,7 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
             const int which = select_map(setup, p);
             if (which < 0) continue;  // no map for this point: lit, no texels
             const ShadowMap& map = setup.maps[which];
-            if (const double step = world_per_depth_unit(map, along_light(scene.light, p), p) / kDepthBufferSteps;
+            if (const double step = world_depth_step(map, reader.depth().format, along_light(scene.light, p), p);
                 std::isfinite(step))
                 depth_steps.push_back(step);
             const PixelAliasing a =

@@ -46,8 +46,9 @@ struct ShadowError {
     // measure does not split into a map's part and a surface's part exactly; this split keeps the
     // product and gives the map's part alone to m_perspective.)
     AliasingStats m, m_perspective, m_projection;
-    // Depth resolution: the world distance along the light that one step of a 24-bit depth buffer
-    // stands for at each judged pixel (max, mean, 95th percentile).
+    // Depth resolution: the world distance along the light that one step of the map's depth format
+    // (the reader's DepthMap::format: depth_step, raster/depth_format.hpp) stands for at each judged
+    // pixel's depth (max, mean, 95th percentile).
     AliasingStats depth_step;
     // Per pixel; 0 where not measured.
     std::vector<float> m_image, m_perspective_image, m_projection_image;

@@ -83,7 +83,7 @@ Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample
     for (int frame = 0; frame < path.frames; ++frame) {
         const Camera camera = camera_at(c.scene.camera, path, frame);
         const ShadowSetup setup = method.compute_maps(frame_inputs(c, method, settings, camera), settings, nullptr);
-        const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution);
+        const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution, lookup.format);
         const ShadowReader reader(setup, depth, c.scene.light, lookup);
         const std::vector<signed char> now = verdicts(samples, camera, reader);
         FrameShimmer f{.frame = frame, .fallbacks = setup.fallbacks};

@@ -1,6 +1,7 @@
 // Triangles are clipped in homogeneous space, divided by w, and filled row by row at texel centres:
 // each row's run of covered texels comes from the edge functions, and the depth is the plane through
-// the divided vertices (d / w is affine in (u / w, v / w), so screen-space interpolation of it is exact).
+// the divided vertices (d / w is affine in (u / w, v / w), so screen-space interpolation of it is exact,
+// and so of a reversed format's s = (w − d_pre) / w); each texel keeps its format's code.
 #include "raster/depth_map.hpp"
 
 #include "geometry/homogeneous_clip.hpp"
@@ -226,13 +227,31 @@ DepthPlane depth_plane(const ScreenVertex& a, const ScreenVertex& b, const Scree
     return {a.depth - per_x * a.p.x - per_y * a.p.y, per_x, per_y};
 }
 
-// The least depth so far per texel of one row: casters before the near plane (d < 0) are stored as 0.
-void fill_run(float* row, const Run& run, const DepthPlane& plane, double centre_y) {
+// The nearest depth so far per texel of one row, as the format stores it: the least code, or
+// reversed the greatest (codes order as their values, raster/depth_format.hpp). Casters before the
+// near plane are stored as d = 0 (code_of clamps).
+template <DepthEncoding encoding, bool reversed>
+void fill_run(DepthCode* row, const Run& run, const DepthPlane& plane, double centre_y) {
     const double at_row = plane.at_origin + plane.per_y * centre_y;
     for (int x = run.first; x <= run.last; ++x) {
-        const float depth = static_cast<float>(at_row + plane.per_x * (x + 0.5));
-        row[x] = std::min(row[x], std::max(0.0f, depth));  // clamped after rounding: the loop vectorizes
+        const DepthCode code = code_of<encoding, reversed>(at_row + plane.per_x * (x + 0.5));
+        row[x] = reversed ? std::max(row[x], code) : std::min(row[x], code);
     }
+}
+
+// One row's run filled in the format's codes, chosen once per raster: the loop over texels knows its
+// format when it is compiled.
+using RunFill = void (*)(DepthCode* row, const Run& run, const DepthPlane& plane, double centre_y);
+
+RunFill run_fill(const DepthFormat& format) {
+    using E = DepthEncoding;
+    const bool r = format.reversed;
+    switch (format.encoding) {
+        case E::unorm16: return r ? fill_run<E::unorm16, true> : fill_run<E::unorm16, false>;
+        case E::unorm24: return r ? fill_run<E::unorm24, true> : fill_run<E::unorm24, false>;
+        case E::float32: return r ? fill_run<E::float32, true> : fill_run<E::float32, false>;
+    }
+    return fill_run<E::float32, false>;
 }
 
 // A screen triangle ready to fill: counter-clockwise (both windings are drawn) and the texels of its
@@ -311,35 +330,46 @@ Bands bin_by_band(const std::vector<FillTriangle>& triangles, const Run& tile_ro
 }
 
 // The triangle's texels in `rows`, each row's run cut from its bounding box by the three edges.
-void draw_rows(const FillTriangle& triangle, const Run& rows, DepthMap& map) {
+void draw_rows(const FillTriangle& triangle, const Run& rows, RunFill fill, DepthMap& map) {
     const auto& [a, b, c] = triangle.corners;
     const Edge edges[] = {{b.p, c.p}, {c.p, a.p}, {a.p, b.p}};
     const DepthPlane plane = depth_plane(a, b, c);
     for (int y = rows.first; y <= rows.last; ++y) {
         Run run = triangle.columns;
         for (const Edge& e : edges) run = intersection(run, e.held(y, run));
-        fill_run(&map.depth[static_cast<std::size_t>(y) * map.resolution], run, plane, y + 0.5);
+        fill(&map.codes[map.index(0, y)], run, plane, y + 0.5);
     }
 }
 
 // The triangles filled on every core, the bands interleaved among them: every texel is written by
-// one thread, and its least depth does not depend on the order, so the result is the same.
+// one thread, and its nearest depth does not depend on the order, so the result is the same. A
+// reversed format draws the map's reversed depth (s, from the map's own terms), interpolated as d is.
 void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object, const ShadowMap& map,
               DepthMap& out) {
-    const TexelRange tile = tile_texels(map, out.resolution);
-    const std::vector<FillTriangle> fill = fill_triangles(triangles, casts_per_object, map, tile, out.resolution);
+    const ShadowMap drawn = out.format.reversed ? with_reversed_depth(map) : map;
+    const TexelRange tile = tile_texels(drawn, out.resolution);
+    const std::vector<FillTriangle> fill = fill_triangles(triangles, casts_per_object, drawn, tile, out.resolution);
     const Bands bands = bin_by_band(fill, {tile.first.y, tile.last.y});
+    const RunFill fill_one = run_fill(out.format);
     parallel_rows([&](int first, int stride) {
         for (int b = first; b < bands.count(); b += stride)
-            for (int i : bands.triangles(b)) draw_rows(fill[i], intersection(bands.rows(b), fill[i].rows), out);
+            for (int i : bands.triangles(b))
+                draw_rows(fill[i], intersection(bands.rows(b), fill[i].rows), fill_one, out);
     });
 }
 
 }  // namespace
 
+DepthMap::DepthMap(int resolution, const DepthFormat& format)
+    : resolution(resolution),
+      format(format),
+      codes(static_cast<std::size_t>(resolution) * resolution, far_code(format)) {}
+
+void DepthMap::set(int x, int y, double depth) { codes[index(x, y)] = depth_code(format, format_value(format, depth)); }
+
 DepthMap rasterize_depth(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
-                         const ShadowSetup& setup, int resolution) {
-    DepthMap out{resolution, std::vector<float>(static_cast<std::size_t>(resolution) * resolution, 1.0f)};
+                         const ShadowSetup& setup, int resolution, const DepthFormat& format) {
+    DepthMap out(resolution, format);
     for (const ShadowMap& map : setup.maps) {
         if (splits_casters(map))  // split for this map's curvature and tile: the edges a GPU draws straight
             draw_map(split_casters(triangles, casts_per_object, map, resolution), casts_per_object, map, out);

@@ -60,7 +60,7 @@ void trace_paraboloid(const WorldTriangles& triangles, const std::vector<bool>& 
             const std::optional<Hit> hit = tracer.first_hit(glm::dvec3(0.0), direction, 0.0, INFINITY);
             if (!hit) continue;
             const double depth = (distance_to_plane(local, hit->triangle, direction) - p.near) / (p.far - p.near);
-            out.depth[std::size_t(y) * out.resolution + x] = float(std::clamp(depth, 0.0, 1.0));
+            out.set(x, y, std::clamp(depth, 0.0, 1.0));
         }
     };
     parallel_rows([&](int offset, int stride) {
@@ -72,7 +72,7 @@ void trace_paraboloid(const WorldTriangles& triangles, const std::vector<bool>& 
 
 DepthMap traced_depth_map(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
                           const ShadowSetup& setup, int resolution) {
-    DepthMap out{resolution, std::vector<float>(std::size_t(resolution) * resolution, 1.0f)};
+    DepthMap out(resolution, DepthFormat{});
     for (const ShadowMap& map : setup.maps) {
         if (map.projection != Projection::paraboloid)
             throw std::invalid_argument(std::string("traced_depth_map: a ") + to_string(map.projection) +

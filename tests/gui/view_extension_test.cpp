@@ -60,8 +60,9 @@ void register_coverage_view() {
 // The share of a map's texels a caster is drawn into.
 double covered_share(const DepthMap& depth) {
     size_t covered = 0;
-    for (float d : depth.depth) covered += d < 1.0f;
-    return static_cast<double>(covered) / depth.depth.size();
+    for (int y = 0; y < depth.resolution; ++y)
+        for (int x = 0; x < depth.resolution; ++x) covered += depth.at(x, y) < 1.0;
+    return static_cast<double>(covered) / depth.codes.size();
 }
 
 // The share of the picture's magenta among its magenta and black pixels (the backdrop left out),

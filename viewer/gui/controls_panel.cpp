@@ -46,7 +46,8 @@ QWidget* setting_editor(const SettingSpec& spec, QWidget* parent) {
     return spin;
 }
 
-// Where the form lists a setting: among the method's own, or in the lookup's Filter or Bias group.
+// Where the form lists a setting: among the method's own, or in the lookup's Filter group or the
+// group every filter reads (the depth biases and the depth format).
 enum class SettingGroup { own, filter, bias };
 
 SettingGroup group_of(const std::string& name) {
@@ -55,7 +56,7 @@ SettingGroup group_of(const std::string& name) {
 }
 
 QLabel* group_header(SettingGroup group, QWidget* parent) {
-    auto* header = new QLabel(group == SettingGroup::filter ? "Filter" : "Depth bias", parent);
+    auto* header = new QLabel(group == SettingGroup::filter ? "Filter" : "Depth bias and format", parent);
     header->setObjectName(group == SettingGroup::filter ? "filterSettings" : "biasSettings");
     QFont bold = header->font();
     bold.setBold(true);

@@ -11,6 +11,8 @@
 #include <QMimeData>
 #include <QPlainTextEdit>
 #include <QProgressBar>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -47,6 +49,20 @@ QDockWidget* dock(const QString& title, const QString& name, QWidget* content, Q
     d->setObjectName(name);
     d->setWidget(content);
     return d;
+}
+
+// A panel that scrolls up and down when the dock is shorter than it: the controls of a method with
+// many settings (xpsm's own, then the filter's, the biases and the depth format) stay within a
+// 1280 x 800 window instead of growing it. As wide as the panel and its scroll bar, so that it never
+// scrolls sideways.
+QScrollArea* scrolling(QWidget* content, QWidget* parent) {
+    auto* area = new QScrollArea(parent);
+    area->setWidget(content);
+    area->setWidgetResizable(true);
+    area->setFrameShape(QFrame::NoFrame);
+    area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    area->setMinimumWidth(content->minimumSizeHint().width() + area->verticalScrollBar()->sizeHint().width());
+    return area;
 }
 
 }  // namespace
@@ -119,7 +135,7 @@ MainWindow::MainWindow(QWidget* parent)
     setCentralWidget(rows);
 
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);  // every step of the longest trace shows
-    QDockWidget* controls_dock = dock("Controls", "controlsDock", controls_, this);
+    QDockWidget* controls_dock = dock("Controls", "controlsDock", scrolling(controls_, this), this);
     addDockWidget(Qt::LeftDockWidgetArea, controls_dock);
     QDockWidget* scene_dock = dock("Scene", "sceneDock", scene_panel_, this);
     tabifyDockWidget(controls_dock, scene_dock);

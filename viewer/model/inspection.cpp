@@ -16,7 +16,8 @@ struct Inspection::LazyDepth {
 
 const DepthMap& Inspection::lazily_rasterized(std::shared_ptr<LazyDepth>& lazy, const std::vector<bool>& drawn) const {
     if (!lazy) lazy = std::make_shared<LazyDepth>();
-    std::call_once(lazy->once, [&] { lazy->depth = rasterize_depth(triangles, drawn, setup, resolution); });
+    std::call_once(lazy->once,
+                   [&] { lazy->depth = rasterize_depth(triangles, drawn, setup, resolution, lookup.format); });
     return lazy->depth;
 }
 

@@ -49,9 +49,10 @@ struct Inspection {
     // What the user is told: a map method's fallbacks, or a technique's limits.
     const std::vector<Note>& notes() const { return has_map() ? setup.fallbacks : geometry->limits; }
 
-    // Maps: every map of `setup` rasterized into its tile (on every core), on the first call: the
-    // Camera view draws its own on the GPU, so a change pays for the CPU's only when a view (Shadow
-    // map, Texels, Error) or a measure reads it. Made from `setup` as it is at that first call.
+    // Maps: every map of `setup` rasterized into its tile (on every core), stored in the lookup's
+    // depth format, on the first call: the Camera view draws its own on the GPU, so a change pays for
+    // the CPU's only when a view (Shadow map, Texels, Error) or a measure reads it. Made from `setup`
+    // and `lookup.format` as they are at that first call.
     const DepthMap& depth() const;
     // The same with every object drawn, receivers too: where each texel lands on a surface (the
     // Texels view back-projects them).

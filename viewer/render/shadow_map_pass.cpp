@@ -26,6 +26,7 @@
 
 #include "lookup/kernel_taps.hpp"
 #include "lookup/shadow_reader.hpp"
+#include "maps/map_lookup.hpp"
 #include "maps/projection_kind.hpp"
 #include "raster/paraboloid_edges.hpp"
 #include "render/glsl_source.hpp"
@@ -66,6 +67,33 @@ struct MapArrays {
 // The arrays go to OpenGL as packed floats.
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec4) == 4 * sizeof(float));
 static_assert(sizeof(glm::mat4) == 16 * sizeof(float));
+
+// The maps stage 1 draws: a reversed format's with their depth reversed (with_reversed_depth), so
+// that the vertex shader computes s = 1 − d from each map's own terms, as the CPU rasterizer does.
+ShadowSetup drawn_setup(const ShadowSetup& setup, const DepthFormat& format) {
+    if (!format.reversed) return setup;
+    ShadowSetup drawn = setup;
+    for (ShadowMap& map : drawn.maps) map = with_reversed_depth(map);
+    return drawn;
+}
+
+// The clip space's depth range: [0, w] (GL_ZERO_TO_ONE, OpenGL 4.5's glClipControl) or OpenGL's
+// default [−w, w].
+void zero_to_one_clip_depth(bool on) {
+    if (!glClipControl)
+        throw std::runtime_error("ShadowMapPass: a reversed depth format needs glClipControl (OpenGL 4.5)");
+    glClipControl(GL_LOWER_LEFT, on ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+}
+
+// The depth texture's internal format: the encoding's (GL_DEPTH_COMPONENT16, 24 or 32F).
+int texture_format(DepthEncoding encoding) {
+    switch (encoding) {
+        case DepthEncoding::unorm16: return vtkTextureObject::Fixed16;
+        case DepthEncoding::unorm24: return vtkTextureObject::Fixed24;
+        case DepthEncoding::float32: return vtkTextureObject::Float32;
+    }
+    return vtkTextureObject::Float32;
+}
 
 MapArrays map_arrays(const ShadowSetup& setup, int resolution) {
     MapArrays a;
@@ -370,7 +398,9 @@ void ShadowMapPass::Render(const vtkRenderState* s) {
 }
 
 void ShadowMapPass::prepare_targets(vtkOpenGLRenderWindow* window) {
-    if (depth_ && depth_->GetWidth() == static_cast<unsigned>(resolution_) && depth_->GetContext() == window) return;
+    if (depth_ && depth_->GetWidth() == static_cast<unsigned>(resolution_) && depth_->GetContext() == window &&
+        allocated_encoding_ == lookup_.format.encoding)
+        return;
     ReleaseGraphicsResources(window);
     depth_ = vtkSmartPointer<vtkTextureObject>::New();
     depth_->SetContext(window);
@@ -378,7 +408,8 @@ void ShadowMapPass::prepare_targets(vtkOpenGLRenderWindow* window) {
     depth_->SetMagnificationFilter(vtkTextureObject::Nearest);
     depth_->SetWrapS(vtkTextureObject::ClampToEdge);
     depth_->SetWrapT(vtkTextureObject::ClampToEdge);
-    depth_->AllocateDepth(resolution_, resolution_, vtkTextureObject::Float32);
+    depth_->AllocateDepth(resolution_, resolution_, texture_format(lookup_.format.encoding));
+    allocated_encoding_ = lookup_.format.encoding;
     colour_ = vtkSmartPointer<vtkTextureObject>::New();  // unused, but keeps the FBO complete everywhere
     colour_->SetContext(window);
     colour_->Allocate2D(resolution_, resolution_, 4, VTK_UNSIGNED_CHAR);
@@ -386,9 +417,11 @@ void ShadowMapPass::prepare_targets(vtkOpenGLRenderWindow* window) {
     fbo_->SetContext(window);
 }
 
-// Stage 1: the casters' depth, each map into its own tile of the texture, cleared to 1 (nothing
-// cast) once for all of them. The viewport is the whole texture (the vertex shader places each map
-// in its tile), the scissor box each tile's texels.
+// Stage 1: the casters' depth, each map into its own tile of the texture, cleared to the far value
+// (nothing cast) once for all of them. The viewport is the whole texture (the vertex shader places
+// each map in its tile), the scissor box each tile's texels. A reversed format stores s = 1 − d: the
+// clip space's depth runs over [0, w] (glClipControl), so that window depth is s itself, not
+// (2 s − w) / w + 1 halved, which would cancel where s is small; cleared to 0, the greater s nearer.
 void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
     vtkOpenGLState* gl = window->GetState();
     vtkOpenGLState::ScopedglViewport viewport(gl);
@@ -400,13 +433,15 @@ void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow*
     fbo_->AddColorAttachment(0, colour_);
     fbo_->AddDepthAttachment(depth_);
     fbo_->ActivateDrawBuffer(0);
+    const bool reversed = lookup_.format.reversed;
+    if (reversed) zero_to_one_clip_depth(true);
     gl->vtkglDisable(GL_SCISSOR_TEST);  // the clear covers the whole texture
     gl->vtkglDepthMask(GL_TRUE);
-    gl->vtkglClearDepth(1.0);
+    gl->vtkglClearDepth(reversed ? 0.0 : 1.0);
     gl->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
     gl->vtkglEnable(GL_SCISSOR_TEST);  // the viewport holds every tile: a map's casters stay in its own
     gl->vtkglEnable(GL_DEPTH_TEST);
-    gl->vtkglDepthFunc(GL_LEQUAL);
+    gl->vtkglDepthFunc(reversed ? GL_GEQUAL : GL_LEQUAL);
     glEnable(GL_DEPTH_CLAMP);
 
     enter(Stage::depth);
@@ -418,6 +453,11 @@ void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow*
     PostRender(&depth_state);
 
     glDisable(GL_DEPTH_CLAMP);
+    if (reversed) {  // OpenGL's defaults again, which VTK's passes draw with
+        zero_to_one_clip_depth(false);
+        gl->vtkglDepthFunc(GL_LEQUAL);
+        gl->vtkglClearDepth(1.0);
+    }
     gl->PopFramebufferBindings();
 }
 
@@ -488,14 +528,19 @@ bool ShadowMapPass::PostReplaceShaderValues(std::string& vertex, std::string&, s
 bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbstractMapper*, vtkProp*,
                                         vtkOpenGLVertexArrayObject*) {
     ProgramUniforms program(shader_program);
+    const DepthFormat& format = lookup_.format;
+    if (stage_ == Stage::depth) {
+        MapArrays drawn = map_arrays(drawn_setup(setup_, format), resolution_);
+        return all_set(set_projection_uniforms(program, drawn), program.SetUniformi("shadowDrawnMap", drawn_map_),
+                       program.SetUniform4f("shadowDrawnViewport", glm::value_ptr(drawn.viewport[drawn_map_])),
+                       program.SetUniformi("shadowDepthZeroToOne", format.reversed));
+    }
     MapArrays maps = map_arrays(setup_, resolution_);
-    if (stage_ == Stage::depth)
-        return all_set(set_projection_uniforms(program, maps), program.SetUniformi("shadowDrawnMap", drawn_map_),
-                       program.SetUniform4f("shadowDrawnViewport", glm::value_ptr(maps.viewport[drawn_map_])));
     const bool unlit = output_ != Output::shaded;  // a grey level, white for lit: the lit mask or the visibility
     return all_set(set_projection_uniforms(program, maps), set_lookup_uniforms(program, maps, setup_),
                    program.SetUniformi("shadowDepth", depth_->GetTextureUnit()),
                    program.SetUniformi("shadowResolution", resolution_),
+                   program.SetUniformi("shadowDepthReversed", format.reversed),
                    program.SetUniformi("shadowLitThreshold", output_ == Output::lit_mask),
                    set_filter_uniforms(program, lookup_, light_, taps_, image_origin_, image_height_),
                    set_surface_shading_uniforms(shader_program, frame_, unlit), set_overlay_uniforms(program, ramp_),

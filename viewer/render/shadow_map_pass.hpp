@@ -3,10 +3,12 @@
 // world_to_uvz, perspective warps included), a paraboloid hemisphere or a cube face, each in its
 // tile of one depth texture. Our own render pass, because vtkShadowMapPass fixes its own light camera.
 //
-// Stage 1 renders the casters' depth into an FBO depth texture, once per map into that map's tile
-// (placed by the vertex shader exactly where the CPU rasterizer places it, however its edges fall
-// between texels, and scissored to the tile's texels; depth clamped, as the CPU rasterizer clamps
-// casters before the near plane; a paraboloid clipped to its hemisphere, and its casters split first
+// Stage 1 renders the casters' depth into an FBO depth texture of the lookup's depth format
+// (GL_DEPTH_COMPONENT16, 24 or 32F; reversed: s = 1 − d from each map's reversed depth, with
+// glClipControl's [0, w] depth range, cleared to 0 and kept where greater), once per map into that
+// map's tile (placed by the vertex shader exactly where the CPU rasterizer places it, however its
+// edges fall between texels, and scissored to the tile's texels; depth clamped, as the CPU rasterizer
+// clamps casters before the near plane; a paraboloid clipped to its hemisphere, and its casters split first
 // where the map asks, as the CPU rasterizer splits them: SetCasterTriangles). Stage 2 renders the scene
 // through `shade` (normally a vtkRenderStepsPass) and reads each fragment's visibility as the one CPU
 // lookup does (lookup/shadow_reader.cpp), step by step: the setup's rule picks the map; the normal
@@ -54,7 +56,8 @@ public:
     // The maps, their tiles and the rule that picks one per point; resolution: texels per side of
     // the whole texture. Throws std::invalid_argument for more than kMaxMaps maps.
     void SetSetup(const ShadowSetup& setup, int resolution);
-    // How fragments read the maps (the filter and the bias, as ShadowReader reads them); the light and
+    // How fragments read the maps (the filter and the bias, as ShadowReader reads them) and how stage 1
+    // stores them (lookup.format, as rasterize_depth stores them); the light and
     // the eye's position in the setup's coordinates (PCSS sizes its search and penumbra by the light).
     // Throws std::invalid_argument for a filter of more than kMaxTaps taps.
     void SetLookup(const ShadowLookup& lookup, const Light& light, const glm::dvec3& eye);
@@ -117,6 +120,7 @@ private:
     vtkSmartPointer<vtkOpaquePass> depth_pass_;
     vtkSmartPointer<vtkOpenGLFramebufferObject> fbo_;
     vtkSmartPointer<vtkTextureObject> depth_, colour_;
+    DepthEncoding allocated_encoding_ = DepthEncoding::float32;  // depth_'s internal format
 };
 
 }  // namespace shadowlab

@@ -33,9 +33,26 @@
 namespace shadowlab {
 namespace {
 
-RgbImage depth_to_grey(const DepthMap& depth) {
+// A value per texel of a texture as the view paints it: the depth (as its map's format stored it,
+// read back through DepthMap::at) or a moment; NaN where a texel holds no value.
+struct TexelValues {
+    int resolution = 0;
+    std::vector<float> values;  // row-major, y * resolution + x
+
+    float at(int x, int y) const { return values[size_t(y) * resolution + x]; }
+};
+
+// The depths read back as d, in float: the grey levels resolve far less.
+TexelValues decoded(const DepthMap& depth) {
+    TexelValues out{.resolution = depth.resolution, .values = std::vector<float>(depth.codes.size())};
+    for (int y = 0; y < depth.resolution; ++y)
+        for (int x = 0; x < depth.resolution; ++x) out.values[depth.index(x, y)] = float(depth.at(x, y));
+    return out;
+}
+
+RgbImage depth_to_grey(const TexelValues& depth) {
     float lo = 1.0f, hi = 0.0f;
-    for (float d : depth.depth)
+    for (float d : depth.values)
         if (d < 1.0f) lo = std::min(lo, d), hi = std::max(hi, d);
     const float span = hi > lo ? hi - lo : 1.0f;
     const int n = depth.resolution;
@@ -60,7 +77,7 @@ Rgb to_rgb(const glm::dvec3& colour) {
 
 // The standard deviations on the heat ramp, 0 black to the texture's largest bright; texels holding
 // no value (NaN: the cross's empty cells) the background.
-RgbImage deviation_to_heat(const DepthMap& deviation, float largest) {
+RgbImage deviation_to_heat(const TexelValues& deviation, float largest) {
     const int n = deviation.resolution;
     RgbImage image(n, n);
     for (int y = 0; y < n; ++y)
@@ -72,9 +89,9 @@ RgbImage deviation_to_heat(const DepthMap& deviation, float largest) {
     return image;
 }
 
-float largest_value(const DepthMap& texture) {
+float largest_value(const TexelValues& texture) {
     float largest = 0.0f;
-    for (float v : texture.depth)
+    for (float v : texture.values)
         if (!std::isnan(v)) largest = std::max(largest, v);
     return largest;
 }
@@ -82,18 +99,18 @@ float largest_value(const DepthMap& texture) {
 // Per texel of the stored texture, the blurred moments' mean or standard deviation in depth units.
 // VSM's moments are the depth's own; EVSM's positive warp μ = E[e^{c⁺d}] is carried back to depth,
 // its mean as ln(μ) / c⁺ and its deviation to first order, σ / (c⁺ μ) (d(e^{c⁺d}) = c⁺ e^{c⁺d} dd).
-DepthMap moment_texture(const Inspection& in, TextureShown shown) {
+TexelValues moment_texture(const Inspection& in, TextureShown shown) {
     const ShadowFilter& filter = in.lookup.filter;
     const MomentMap moments = blurred_moments(in.depth(), in.setup, filter);
     const bool exponential = filter_of(filter).moments == Moments::exponential;
-    DepthMap texture{.resolution = moments.resolution, .depth = std::vector<float>(moments.moments.size())};
+    TexelValues texture{.resolution = moments.resolution, .values = std::vector<float>(moments.moments.size())};
     for (size_t i = 0; i < moments.moments.size(); ++i) {
         const double mean = moments.moments[i].x, second = moments.moments[i].y;
         const double sigma = std::sqrt(std::max(0.0, second - mean * mean));  // √(m₂ − m₁²)
         if (shown == TextureShown::moment_mean)
-            texture.depth[i] = float(exponential ? std::log(mean) / filter.evsm_positive : mean);
+            texture.values[i] = float(exponential ? std::log(mean) / filter.evsm_positive : mean);
         else
-            texture.depth[i] = float(exponential ? sigma / (filter.evsm_positive * mean) : sigma);
+            texture.values[i] = float(exponential ? sigma / (filter.evsm_positive * mean) : sigma);
     }
     return texture;
 }
@@ -296,7 +313,7 @@ std::string draw_tessellation_error(vtkRenderer* renderer, const Inspection& in,
 // The texture as shown (a value per texel: the depth, or a moment), and the setup whose tiles say
 // where each map lies in it.
 struct ShownTexture {
-    DepthMap texture;
+    TexelValues texture;
     ShadowSetup setup;
 };
 
@@ -307,11 +324,11 @@ constexpr std::array<glm::ivec2, 6> kCrossCells{{{2, 1}, {0, 1}, {1, 0}, {1, 2},
 // A cube's six faces moved from their 3 x 2 atlas into the cross, texel for texel: the shown
 // texture is four faces wide (a face keeps its side, rounded to whole texels); the cells no face
 // takes hold `empty`.
-ShownTexture as_cross(const Inspection& in, const DepthMap& stored_texture, float empty) {
+ShownTexture as_cross(const Inspection& in, const TexelValues& stored_texture, float empty) {
     const int side = static_cast<int>(std::lround(tile_resolution(in.setup.maps.front(), in.resolution)));
     const int shown_n = 4 * side;
     ShownTexture shown{
-        .texture = {.resolution = shown_n, .depth = std::vector<float>(size_t(shown_n) * shown_n, empty)},
+        .texture = {.resolution = shown_n, .values = std::vector<float>(size_t(shown_n) * shown_n, empty)},
         .setup = in.setup};
     for (ShadowMap& map : shown.setup.maps) {
         const glm::ivec2 cell = kCrossCells[map.cube_face];
@@ -321,14 +338,14 @@ ShownTexture as_cross(const Inspection& in, const DepthMap& stored_texture, floa
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x) {
                 const glm::ivec2 texel = texel_of(stored, (glm::dvec2(x, y) + 0.5) / double(side), in.resolution);
-                shown.texture.depth[size_t(corner.y + y) * shown_n + corner.x + x] =
+                shown.texture.values[size_t(corner.y + y) * shown_n + corner.x + x] =
                     stored_texture.at(texel.x, texel.y);
             }
     }
     return shown;
 }
 
-ShownTexture shown_texture(const Inspection& in, const DepthMap& stored_texture, float empty) {
+ShownTexture shown_texture(const Inspection& in, const TexelValues& stored_texture, float empty) {
     if (in.setup.selection.rule == MapSelection::Rule::cube_face && in.setup.maps.size() == 6)
         return as_cross(in, stored_texture, empty);
     return {stored_texture, in.setup};
@@ -351,7 +368,7 @@ const glm::dvec3 kFrustumOnGrey{1.0, 0.85, 0.1}, kFrustumOnHeat{0.3, 0.8, 1.0};
 
 // The depth, as stored.
 PaintedTexture painted_depth(const Inspection& in, std::string caption) {
-    ShownTexture shown = shown_texture(in, in.depth(), 1.0f);
+    ShownTexture shown = shown_texture(in, decoded(in.depth()), 1.0f);
     RgbImage image = depth_to_grey(shown.texture);
     return {std::move(shown), std::move(image), std::move(caption)};
 }
@@ -442,8 +459,11 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
     const char* frustum_words = painted.on_heat_ramp ? "camera frustum in blue; " : "camera frustum in yellow; ";
     const bool linear_maps = std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
                                          [](const ShadowMap& m) { return projection_kind(m).projective(); });
-    add_caption(renderer, "Shadow map " + std::to_string(in.resolution) + "² — " + in.name() + words + maps + cross +
-                              " (" + (linear_maps ? frustum_words : "") +
+    // The depth format named when it is not the default float32 (the images of the default stay as they were).
+    std::string title = "Shadow map " + std::to_string(in.resolution) + "²";
+    if (const DepthFormat& format = in.depth().format; !(format == DepthFormat{}))
+        title.append(" ").append(describe(format));  // (GCC 12 warns falsely of " " + a string here)
+    add_caption(renderer, title + " — " + in.name() + words + maps + cross + " (" + (linear_maps ? frustum_words : "") +
                               (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
                               "texel grid when zoomed in)" + sagittas);
     return report;

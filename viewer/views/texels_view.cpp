@@ -47,7 +47,7 @@ TileTexels tile_texels(const ShadowMap& map, int n) {
 }
 
 // 1 is the clear value (no caster there); 0 a caster before the near plane, clamped: not where it is.
-bool holds_surface(float depth) { return depth > 0.0f && depth < 1.0f; }
+bool holds_surface(double depth) { return depth > 0.0 && depth < 1.0; }
 
 // The map's (u, v) at a point of the texture given in texels: texture_uv undone.
 glm::dvec2 map_uv(const ShadowMap& map, const glm::dvec2& in_texels, int n) {
@@ -67,7 +67,7 @@ std::optional<double> depth_along(const DepthMap& depth, const TileTexels& tile,
                                   const glm::ivec2& axis, int steps) {
     const glm::ivec2 at = texel + steps * axis;
     if (glm::any(glm::lessThan(at, tile.first)) || glm::any(glm::greaterThanEqual(at, tile.end))) return std::nullopt;
-    const float d = depth.at(at.x, at.y);
+    const double d = depth.at(at.x, at.y);
     return holds_surface(d) ? std::optional<double>(d) : std::nullopt;
 }
 
@@ -81,8 +81,9 @@ double depth_slope(const DepthMap& depth, const TileTexels& tile, const glm::ive
         for (int k = 0; k < 3; ++k) d[k] = depth_along(depth, tile, texel, axis, first + k);
         if (!d[0] || !d[1] || !d[2]) continue;
         const double before = *d[1] - *d[0], after = *d[2] - *d[1];
-        // float32 depths: a few units in the last place of slack beside a share of the slope
-        if (std::abs(after - before) <= 0.05 * std::abs(before + after) + 4e-7) return 0.5 * (before + after);
+        // A few of the format's steps of slack beside a share of the slope (float32: units in the last place)
+        const double slack = std::max(4e-7, 4.0 * depth_step(depth.format, *d[1]));
+        if (std::abs(after - before) <= 0.05 * std::abs(before + after) + slack) return 0.5 * (before + after);
     }
     return 0.0;
 }

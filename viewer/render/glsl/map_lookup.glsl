@@ -13,6 +13,13 @@ uniform float shadowSelectionBlendBand;
 uniform vec3 shadowSelectionCentre;
 uniform sampler2D shadowDepth;
 uniform int shadowResolution;
+uniform int shadowDepthReversed;  // 1: the texture holds s = 1 − d (a reversed depth format)
+// DepthMap::at: a texel's depth d, the format's stored value read back (the texture's own encoding
+// already turned into [0, 1]).
+float shadowStoredDepth(ivec2 texel) {
+  float s = texelFetch(shadowDepth, texel, 0).r;
+  return shadowDepthReversed == 1 ? 1.0 - s : s;
+}
 bool shadowInUnitRange(float t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
 bool shadowOnMap(vec4 h) { return h.w > 0.0 && shadowInUnitRange(h.x / h.w) && shadowInUnitRange(h.y / h.w); }
 // 0..5 for +x, -x, +y, -y, +z, -z: the major axis of r (x, then y, on ties) and its sign.

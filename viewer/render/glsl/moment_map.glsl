@@ -16,7 +16,7 @@ vec4 shadowBlurredMoments(int i, ivec2 texel, bool exponential) {
   vec4 sum = vec4(0.0);
   for (int dy = -before; dy <= after; ++dy)
     for (int dx = -before; dx <= after; ++dx)
-      sum += shadowMomentsOf(texelFetch(shadowDepth, clamp(texel + ivec2(dx, dy), first, last), 0).r, exponential);
+      sum += shadowMomentsOf(shadowStoredDepth(clamp(texel + ivec2(dx, dy), first, last)), exponential);
   return sum / float(side * side);
 }
 // sample_moments: bilinear between the four nearest texel centres, kept in the tile.

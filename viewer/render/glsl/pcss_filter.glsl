@@ -25,7 +25,7 @@ float shadowSoftShadow(int i, ShadowMapReceiver m, float rotation) {
   int blockers = 0;
   for (int k = 0; k < shadowTapCount; ++k) {
     ivec2 texel = shadowTexelOf(i, m.uv + shadowRotated(shadowTaps[k].xy, c, s) * (search / m.texels));
-    float stored = texelFetch(shadowDepth, texel, 0).r;
+    float stored = shadowStoredDepth(texel);
     if (stored < m.depth) {
       blockerDepth += stored;
       ++blockers;

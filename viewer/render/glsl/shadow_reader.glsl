@@ -48,7 +48,7 @@ float shadowLitShare(int i, ShadowMapReceiver m, float radiusTexels, float rotat
   for (int k = 0; k < shadowTapCount; ++k) {
     ivec2 texel = shadowTexelOf(i, m.uv + shadowRotated(shadowTaps[k].xy, c, s) * (radiusTexels / m.texels));
     float receiver = m.depth + dot(m.planeGradient, shadowTexelCentreUv(i, texel) - m.uv);
-    if (receiver <= texelFetch(shadowDepth, texel, 0).r) lit += shadowTaps[k].z;
+    if (receiver <= shadowStoredDepth(texel)) lit += shadowTaps[k].z;
   }
   return min(lit, 1.0);  // the weights' rounding
 }

@@ -1,11 +1,12 @@
 // The GPU pass reads shadows as the one CPU lookup does (issue 15): for each filter and each depth
-// bias, the pass's visibility per pixel (ShadowMapPass::Output::visibility, a grey level) against
-// ShadowReader::visibility of the same receiver: the visible point, its normal, the Poisson disk's
-// turn at that pixel.
+// bias, and each depth format (issue 26), the pass's visibility per pixel
+// (ShadowMapPass::Output::visibility, a grey level) against ShadowReader::visibility of the same
+// receiver: the visible point, its normal, the Poisson disk's turn at that pixel.
 #include <cmath>
 #include <iostream>
 #include <map>
 #include <string>
+#include <vector>
 #include <gtest/gtest.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
@@ -101,7 +102,7 @@ Parity gpu_against_cpu_visibility(const Inspection& in, const ReferenceImage& re
 }
 
 struct SettingsCase {
-    const char* name;
+    std::string name;
     SettingTexts settings;
 };
 
@@ -121,17 +122,17 @@ const SettingsCase kBiases[] = {
     {"receiver plane", {{"bias_receiver_plane", "on"}}},
 };
 
-}  // namespace
-
-TEST(GpuFilterParity, EachFilterAndBiasReadsAsTheCpuLookup) {
+// Every filter with one more lookup setting (a bias, a depth format) against the CPU's visibility.
+template <class Variants>
+void expect_each_filter_to_read_as_the_cpu(const Variants& variants) {
     const Scene scene = box_under_area_sun();
     const ReferenceImage ref = exact_reference(scene, tessellate(scene), kWidth, kHeight);
     for (const SettingsCase& filter : kFilters) {
-        for (const SettingsCase& bias : kBiases) {
+        for (const SettingsCase& variant : variants) {
             InspectionRequest request{.method = "focused", .settings = filter.settings, .resolution = 1024};
-            request.settings.insert(bias.settings.begin(), bias.settings.end());
+            request.settings.insert(variant.settings.begin(), variant.settings.end());
             const Parity p = gpu_against_cpu_visibility(inspect_scene(scene, request), ref);
-            const std::string name = std::string(filter.name) + ", " + bias.name;
+            const std::string name = filter.name + ", " + variant.name;
             ASSERT_GT(p.compared, kWidth * kHeight / 4u) << name;
             EXPECT_GT(p.shadowed, 1000u) << name << ": the box's shadow is in view";
             if (filter.settings.at("filter") != "hard") {
@@ -144,4 +145,18 @@ TEST(GpuFilterParity, EachFilterAndBiasReadsAsTheCpuLookup) {
                       << p.shadowed << " less than half lit)\n";
         }
     }
+}
+
+}  // namespace
+
+TEST(GpuFilterParity, EachFilterAndBiasReadsAsTheCpuLookup) { expect_each_filter_to_read_as_the_cpu(kBiases); }
+
+// Every depth format but the default, under the default bias: each filter reads the map back as d
+// (reversed: 1 − s), the moments of VSM and EVSM summed from it too.
+TEST(GpuFilterParity, EachFilterReadsEachDepthFormatAsTheCpuLookup) {
+    std::vector<SettingsCase> formats;
+    for (const DepthFormat& format : depth_formats())
+        if (!(format == DepthFormat{})) formats.push_back({describe(format), depth_format_settings(format)});
+    ASSERT_EQ(formats.size(), 5u);
+    expect_each_filter_to_read_as_the_cpu(formats);
 }
