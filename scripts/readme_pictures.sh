@@ -66,6 +66,11 @@ x $shadowlab render data/scenes/lamp_room.json --method cube --view shadowmap --
 
 # Soft shadows: hard, PCF and PCSS under a sun 2° wide; the signed error of PCF and PCSS against the
 # soft reference; VSM's blurred moments.
+x $shadowlab render data/scenes/box_on_plane.json --method psm --set bias_slope=0.25 --view error --error causes \
+    --size 640x360 --out $images/causes_psm_box.png
+x $shadowlab render /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb --method lispsm \
+    --view error --error causes --size 640x360 --out $images/causes_lispsm_engine.png
+
 soft() { x $shadowlab render data/scenes/soft_shadows.json --method focused --size 640x360 "$@"; }
 soft --set filter=hard --view camera --out $images/soft_hard.png
 soft --set filter=pcf --view camera --out $images/soft_pcf.png

@@ -6,6 +6,7 @@
 
 #include "lookup/depth_bias.hpp"
 #include "maps/map_lookup.hpp"
+#include "raster/depth_format.hpp"
 #include "metrics/map_breakdown.hpp"
 
 namespace shadowlab {
@@ -17,12 +18,6 @@ constexpr double kDepthNoise = 1e-12;
 
 bool misclassified(PixelVerdict v) { return v == PixelVerdict::false_shadow || v == PixelVerdict::false_light; }
 bool shadowed_by(const TexelRead& read) { return read.receiver > read.stored; }
-
-// The gap between stored levels at depth d: a float texel's.
-double format_step(const DepthMap&, double d) {
-    const float f = float(d);
-    return double(std::nextafter(f, 2.0f)) - double(f);
-}
 
 // The same reader's maps read three ways: as the run reads them (filter and biases), hard with the
 // run's biases, and hard with none.
@@ -51,7 +46,7 @@ public:
         e.hard_right = (hard_.visibility(r) >= 0.5) == truly_lit;
         e.seam = in_disagreeing_band(blend, r) || beside_a_later_map_reading_right(blend.map, r, x, y, truly_lit);
         e.gap = read->receiver - read->stored;
-        e.step = format_step(reader_.depth(), read->stored);
+        e.step = depth_step(reader_.depth().format, read->stored);
         const ReceiverPlane plane = receiver_plane(blend.map, r);
         e.own_surface = read->stored >= plane.depth_at(read->texel_centre_uv) - plane.tolerance(e.step);
         if (const std::optional<TexelRead> bare = unbiased_.read_texel(blend.map, r))
