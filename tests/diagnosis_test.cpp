@@ -12,6 +12,7 @@
 #include "test_support.hpp"
 
 using namespace shadowlab;
+using shadowlab::testing::camera_20_units_above_the_origin;
 using shadowlab::testing::shipped_scenes;
 using shadowlab::testing::source_path;
 
@@ -74,13 +75,7 @@ Scene ground_and(double tilt_deg, std::vector<SceneObject> casters = {}, bool gr
     for (SceneObject& o : casters) scene.objects.push_back(o);
     const double tilt = glm::radians(tilt_deg);
     scene.light.direction = {std::sin(tilt), -std::cos(tilt), 0};
-    scene.camera.position = {0, 20, 0};
-    scene.camera.target = {0, 0, 0};
-    scene.camera.up = {0, 0, -1};
-    scene.camera.fov_y_deg = 60;
-    scene.camera.aspect = 1;
-    scene.camera.near = 1;
-    scene.camera.far = 100;
+    scene.camera = camera_20_units_above_the_origin();
     return scene;
 }
 

@@ -11,6 +11,7 @@
 #include "test_support.hpp"
 
 using namespace shadowlab;
+using shadowlab::testing::camera_20_units_above_the_origin;
 using shadowlab::testing::source_path;
 
 namespace {
@@ -27,13 +28,7 @@ Scene overhead_scene() {
     box.position = {0, 2, 0};
     scene.objects = {ground, box};
     scene.light.direction = {0, -1, 0};
-    scene.camera.position = {0, 20, 0};
-    scene.camera.target = {0, 0, 0};
-    scene.camera.up = {0, 0, -1};
-    scene.camera.fov_y_deg = 60;
-    scene.camera.aspect = 1;
-    scene.camera.near = 1;
-    scene.camera.far = 100;
+    scene.camera = camera_20_units_above_the_origin();
     return scene;
 }
 

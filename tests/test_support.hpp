@@ -21,6 +21,19 @@ inline std::string source_path(const std::string& relative) {
     return (std::filesystem::path(SHADOWLAB_SOURCE_DIR) / relative).string();
 }
 
+// A square camera 20 units up, looking straight down at the origin (-z up the image), 60° high.
+inline Camera camera_20_units_above_the_origin() {
+    Camera camera;
+    camera.position = {0, 20, 0};
+    camera.target = {0, 0, 0};
+    camera.up = {0, 0, -1};
+    camera.fov_y_deg = 60;
+    camera.aspect = 1;
+    camera.near = 1;
+    camera.far = 100;
+    return camera;
+}
+
 inline std::vector<std::string> shipped_scenes() {
     std::vector<std::string> files;
     for (const auto& entry : std::filesystem::directory_iterator(source_path("data/scenes")))
