@@ -107,7 +107,7 @@ void inspect_map(const InspectOptions& options, const Method& method, const Sett
     ShadowInputs inputs = gather_inputs(scene);
     if (method.wants_visible_depths(settings)) {
         const glm::ivec2 image = image_size_within(scene.camera, kDepthImageSide, kDepthImageSide);
-        inputs.visible_depths = trace_receiver_depth_range(scene, tessellate(scene), image.x, image.y);
+        trace_depth_image(inputs, scene, tessellate(scene), image.x, image.y);
     }
     Trace trace;
     const ShadowSetup setup = method.compute_maps(inputs, settings, &trace);

@@ -101,6 +101,7 @@ Json to_json(const Measurement& m) {
         out["lookup_ns_per_pixel"] = e.receiver_pixels ? 1e6 * m.lookup_ms / double(e.receiver_pixels) : 0.0;
         out["taps_per_pixel"] = m.taps_per_pixel;
     }
+    if (m.pages) out["pages"] = pages_json(*m.pages);
     if (m.by_map) {
         out["per_map"] = to_json(*m.by_map);
         out["seam_share"] = m.by_map->seam_share();  // of the misclassified pixels, near a boundary between maps
@@ -139,7 +140,13 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
                   << "\n    perspective factor (the parameterization's part): " << e.m_perspective
                   << "\n    projection factor (the surface's tilt): " << e.m_projection << "\n  depth step of the "
                   << describe(m.lookup.format) << " map (world units): " << e.depth_step << "\n";
-    if (m.by_map) {
+    if (m.pages) {
+        const PageCounts& n = m.pages->counts;
+        std::cout << "  pages: " << m.pages->pages.size() << " resident of " << n.marked << " marked, budget "
+                  << n.budget << " of " << m.pages->page_size << "^2 texels, " << n.over_budget
+                  << " fell to a coarser level, " << n.dropped << " without a slot\n";
+    }
+    if (m.by_map && !m.pages) {  // per page would be hundreds of lines: the JSON has them
         for (size_t k = 0; k < m.by_map->maps.size(); ++k) {
             const MapShare& share = m.by_map->maps[k];
             std::cout << "  map " << k << ": " << share.pixels << " receiver pixels, misclassified "

@@ -47,12 +47,13 @@ void method_setup(benchmark::State& state, const Method* method, const std::map<
     const std::vector<ObjectBox> boxes = object_boxes(scene);
     const Settings settings = resolve_settings(method->name, method->settings, set);
     // Visible depth bounds read the camera's depth image: traced once, as a renderer's depth pre-pass.
-    std::optional<DepthRange> visible_depths;
+    ShadowInputs seen;
     if (method->wants_visible_depths(settings))
-        visible_depths = trace_receiver_depth_range(scene, tessellate(scene), kDepthImage.x, kDepthImage.y);
+        trace_depth_image(seen, scene, tessellate(scene), kDepthImage.x, kDepthImage.y);
     for (auto _ : state) {
         ShadowInputs inputs = gather_inputs(scene.camera, scene.light, boxes);
-        inputs.visible_depths = visible_depths;
+        inputs.visible_depths = seen.visible_depths;
+        inputs.seen_receivers = seen.seen_receivers;
         Trace trace;
         ShadowSetup setup = method->compute_maps(inputs, settings, traced ? &trace : nullptr);
         benchmark::DoNotOptimize(setup);

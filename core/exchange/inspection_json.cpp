@@ -107,11 +107,31 @@ Json to_json(const ShadowMap& map) {
     return out;
 }
 
+Json pages_json(const PageTable& t) {
+    std::vector<int> per_level(t.levels.size(), 0);
+    for (const PageAddress& a : t.pages) ++per_level[a.level];
+    return {{"resident", t.pages.size()},          {"budget", t.counts.budget},       {"page_size", t.page_size},
+            {"levels", t.levels.size()},           {"resident_per_level", per_level}, {"marked", t.counts.marked},
+            {"over_budget", t.counts.over_budget}, {"dropped", t.counts.dropped}};
+}
+
+Json to_json(const PageTable& t) {
+    Json levels = Json::array(), pages = Json::array();
+    for (const PageLevel& level : t.levels)
+        levels.push_back(
+            {{"world_to_uvz", to_json(level.world_to_uvz)}, {"first_page", {level.first_page.x, level.first_page.y}}});
+    for (const PageAddress& a : t.pages) pages.push_back({a.level, a.page.x, a.page.y});
+    Json out = pages_json(t);
+    out.update({{"pages_per_side", t.pages_per_side}, {"level_maps", levels}, {"map_pages", pages}});
+    return out;
+}
+
 Json to_json(const MapSelection& s) {
     Json out = {{"rule", to_string(s.rule)}};
     if (s.rule == MapSelection::Rule::view_depth)
         out.update({{"eye", to_json(s.eye)}, {"view_axis", to_json(s.view_axis)}, {"split_depths", s.split_depths}});
     if (s.rule == MapSelection::Rule::cube_face) out["centre"] = to_json(s.centre);
+    if (s.rule == MapSelection::Rule::pages) out["pages"] = to_json(s.pages);
     return out;
 }
 

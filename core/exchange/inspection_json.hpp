@@ -18,6 +18,9 @@ Json to_json(const NamedGeometry& geometry);
 Json to_json(const Step& step);
 Json to_json(const ShadowMap& map);
 Json to_json(const MapSelection& selection);
+// A virtual map's page table in brief (what measure --json reports as "pages"), and whole.
+Json pages_json(const PageTable& table);
+Json to_json(const PageTable& table);
 // [{"kind": "empty intersection body", "message": ...}, ...]
 Json to_json(const std::vector<Note>& notes);
 

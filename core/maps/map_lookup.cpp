@@ -53,6 +53,7 @@ const char* to_string(MapSelection::Rule rule) {
         case MapSelection::Rule::tile_bounds: return "by tile bounds";
         case MapSelection::Rule::cube_face: return "by cube face";
         case MapSelection::Rule::hemisphere: return "by hemisphere";
+        case MapSelection::Rule::pages: return "by page";
     }
     return "?";
 }
@@ -86,6 +87,7 @@ int select_map(const ShadowSetup& setup, const glm::dvec3& world) {
         }
         case MapSelection::Rule::hemisphere:
             return first_map(setup, [&](const ShadowMap& m) { return hemisphere_side(m, world) >= 0.0; });
+        case MapSelection::Rule::pages: return resident_map(setup.selection.pages, world);
     }
     return -1;
 }
@@ -154,6 +156,7 @@ ShadowSetup relative_to(ShadowSetup setup, const glm::dvec3& origin) {
         map.world_to_uvz = map.world_to_uvz * world_from_local;
         map.paraboloid.centre -= origin;
     }
+    for (PageLevel& level : setup.selection.pages.levels) level.world_to_uvz = level.world_to_uvz * world_from_local;
     setup.selection.eye -= origin;
     setup.selection.centre -= origin;
     return setup;

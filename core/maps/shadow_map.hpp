@@ -5,6 +5,7 @@
 #include <vector>
 #include <glm/glm.hpp>
 
+#include "maps/page_table.hpp"
 #include "notes/note.hpp"
 
 namespace shadowlab {
@@ -50,6 +51,7 @@ struct MapSelection {
         tile_bounds,  // the first map whose (u, v) holds the point (seed 003's atlas lookup)
         cube_face,    // the face of the major axis of p - centre
         hemisphere,   // the paraboloid whose +z side holds p
+        pages,        // the finest resident page of a virtual map's table that holds p (maps/page_table.hpp)
     };
     Rule rule = Rule::only;
     glm::dvec3 eye{0.0};  // view_depth: depth = (p - eye) . view_axis
@@ -59,6 +61,7 @@ struct MapSelection {
     // (0: a hard seam; at most 0.5).
     double blend_band = 0.0;
     glm::dvec3 centre{0.0};  // cube_face: the light's position
+    PageTable pages;         // pages: the levels and which map holds each resident page
 };
 const char* to_string(MapSelection::Rule rule);
 

@@ -27,6 +27,13 @@ struct DepthRange {
     bool empty() const { return !(far > near); }
 };
 
+// The receiver points a camera depth image shows, one per receiver pixel, and the image's height in
+// pixels (a pixel's footprint: methods/page_marking.hpp): what a virtual shadow map marks its pages from.
+struct SeenReceivers {
+    std::vector<glm::dvec3> points;
+    int image_height = 0;
+};
+
 struct ShadowInputs {
     Camera camera;
     Light light;
@@ -39,6 +46,9 @@ struct ShadowInputs {
     // the caller, who has the scene's triangles (reference/visible_depths.hpp); an empty range when
     // no receiver is visible. None when not measured.
     std::optional<DepthRange> visible_depths;
+    std::optional<SeenReceivers> seen_receivers;  // the same image's points, measured with visible_depths
+    // Texels per side of the texture the setup will be drawn into: a virtual map's physical pool.
+    int texture_resolution = 1024;
 
     std::vector<glm::dvec3> receiver_points() const;  // 8 corners per box
     std::vector<glm::dvec3> caster_points() const;

@@ -16,18 +16,20 @@ namespace {
 // The setup, and the fastest of a few runs of it: a setup takes microseconds and the machine is noisy.
 // The visible depths, when the settings read them, are reduced from the reference's camera image
 // (its depth image) inside the timed run.
-ShadowInputs inputs_for(const MeasureContext& c, const Method& method, const Settings& settings) {
+ShadowInputs inputs_for(const MeasureContext& c, const Method& method, const Settings& settings, int resolution) {
     ShadowInputs inputs = gather_inputs(c.scene.camera, c.scene.light, c.boxes);
-    if (method.wants_visible_depths(settings)) inputs.visible_depths = receiver_depth_range(c.scene, c.reference);
+    inputs.texture_resolution = resolution;
+    if (method.wants_visible_depths(settings)) read_depth_image(inputs, c.scene, c.reference);
     return inputs;
 }
 
-ShadowSetup timed_setup(const MeasureContext& c, const Method& method, const Settings& settings, double& best_ms) {
+ShadowSetup timed_setup(const MeasureContext& c, const Method& method, const Settings& settings, int resolution,
+                        double& best_ms) {
     ShadowSetup setup;
     best_ms = INFINITY;
     for (int run = 0; run < 5; ++run) {
         const Stopwatch watch;
-        setup = method.compute_maps(inputs_for(c, method, settings), settings, nullptr);
+        setup = method.compute_maps(inputs_for(c, method, settings, resolution), settings, nullptr);
         best_ms = std::min(best_ms, watch.ms());
     }
     return setup;
@@ -39,7 +41,7 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     m.method = method.name;
     m.resolution = resolution;
     m.bias = bias;
-    const ShadowSetup setup = timed_setup(c, method, settings, m.setup_ms);
+    const ShadowSetup setup = timed_setup(c, method, settings, resolution, m.setup_ms);
     m.fallbacks = setup.fallbacks;
     for (const ShadowMap& map : setup.maps) m.texels_used += std::pow(tile_resolution(map, resolution), 2);
     m.lookup = lookup_from(settings, bias);
@@ -56,6 +58,7 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     m.taps_per_pixel = m.error.receiver_pixels ? double(count.taps) / double(m.error.receiver_pixels) : 0.0;
     for (Note& note : reader.fallbacks(count)) m.fallbacks.push_back(std::move(note));
     if (setup.maps.size() > 1) m.by_map = break_down_by_map(c.reference, m.error, setup);
+    if (setup.selection.rule == MapSelection::Rule::pages) m.pages = setup.selection.pages;
     return m;
 }
 
@@ -96,7 +99,7 @@ std::optional<Note> warp_loss(const MeasureContext& c, const Method& warp, const
     if (!(measured.error.misclassified > kLossRatio * reference_map.error.misclassified + kLossMargin))
         return std::nullopt;
     Trace trace;
-    warp.compute_maps(inputs_for(c, warp, settings), settings, &trace);
+    warp.compute_maps(inputs_for(c, warp, settings, resolution), settings, &trace);
     return Note{NoteKind::warp_loses, loss_cause(measured, reference_map, warp_choices(trace))};
 }
 

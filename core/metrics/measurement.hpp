@@ -42,6 +42,7 @@ struct Measurement {
     std::vector<Note> limits;              // geometric techniques: the limits met
     std::optional<GeometryCost> geometry;  // geometric techniques only: polygons drawn, fragments per pixel
     std::optional<MapBreakdown> by_map;    // setups of several maps only: per map, and the seams
+    std::optional<PageTable> pages;        // a virtual map's page table (MapSelection::Rule::pages)
 
     // What the method told the user: a map's fallbacks, a technique's limits.
     const std::vector<Note>& notes() const { return geometry ? limits : fallbacks; }

@@ -43,7 +43,7 @@ public:
         }
         const bool truly_lit = ref_.lit[i] != 0;
         e.filtered = reader_.lookup().filter.soft();
-        e.hard_right = (hard_.visibility(r) >= 0.5) == truly_lit;
+        e.hard_right = e.filtered && (hard_.visibility(r) >= 0.5) == truly_lit;  // read only when it can decide
         e.seam = in_disagreeing_band(blend, r) || beside_a_later_map_reading_right(blend.map, r, x, y, truly_lit);
         e.gap = read->receiver - read->stored;
         e.step = depth_step(reader_.depth().format, read->stored);

@@ -36,14 +36,14 @@ std::vector<signed char> verdicts(const std::vector<ShimmerSample>& samples, con
 
 // The frame's inputs; the visible depths, when the settings read them, from the frame's own depth
 // image at the reference's size (the camera moved: what it sees changed).
-ShadowInputs frame_inputs(const MeasureContext& c, const Method& method, const Settings& settings,
-                          const Camera& camera) {
+ShadowInputs frame_inputs(const MeasureContext& c, const Method& method, const Settings& settings, const Camera& camera,
+                          int resolution) {
     ShadowInputs inputs = gather_inputs(camera, c.scene.light, c.boxes);
+    inputs.texture_resolution = resolution;
     if (method.wants_visible_depths(settings)) {
         Scene seen_from_frame = c.scene;
         seen_from_frame.camera = camera;
-        inputs.visible_depths =
-            trace_receiver_depth_range(seen_from_frame, c.triangles, c.reference.width, c.reference.height);
+        trace_depth_image(inputs, seen_from_frame, c.triangles, c.reference.width, c.reference.height);
     }
     return inputs;
 }
@@ -82,7 +82,8 @@ Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample
     std::vector<signed char> before;
     for (int frame = 0; frame < path.frames; ++frame) {
         const Camera camera = camera_at(c.scene.camera, path, frame);
-        const ShadowSetup setup = method.compute_maps(frame_inputs(c, method, settings, camera), settings, nullptr);
+        const ShadowSetup setup =
+            method.compute_maps(frame_inputs(c, method, settings, camera, resolution), settings, nullptr);
         const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution, lookup.format);
         const ShadowReader reader(setup, depth, c.scene.light, lookup);
         const std::vector<signed char> now = verdicts(samples, camera, reader);

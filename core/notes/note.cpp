@@ -37,6 +37,11 @@ const std::vector<NoteInfo>& all_note_kinds() {
         {orthographic_camera, F, "orthographic camera",
          "its rays are parallel, so its post-perspective space is an affine image of the world and the view spreads "
          "texels evenly in depth: nothing to warp, the focused map"},
+        {over_page_budget, F, "pages over the budget",
+         "the view marked more pages than the physical pool holds: the resolution bias rises until they fit, every "
+         "point's texels wider by the same share (UE5's dynamic resolution)"},
+        {outside_clipmap, F, "points beyond the clipmap",
+         "seen receivers farther from the camera than the coarsest level reaches: no page holds them, they read lit"},
         {warp_loses, F, "warp loses to the focused map",
          "measured, the warp misclassifies more than twice the focused map's share (and 0.05 percentage points "
          "more): the cause and the numbers follow; the focused map serves this view better"},

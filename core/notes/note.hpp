@@ -32,6 +32,8 @@ enum class NoteKind {
     no_light_axis,
     no_matrices,
     orthographic_camera,
+    over_page_budget,
+    outside_clipmap,
     // Found when a warp is measured against the reference.
     warp_loses,
     // Fallbacks of the lookups' filters.

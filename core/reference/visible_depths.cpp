@@ -20,6 +20,23 @@ DepthRange receiver_depth_range(const Scene& scene, const ReferenceImage& seen) 
                       .far = std::min(camera.far, farthest * (1.0 + kVisibleDepthMargin))};
 }
 
+SeenReceivers receivers_seen(const Scene& scene, const ReferenceImage& seen) {
+    SeenReceivers out{.image_height = seen.height};
+    for (size_t i = 0; i < seen.visible.size(); ++i)
+        if (seen.visible[i] && scene.objects[seen.object[i]].receives) out.points.push_back(seen.position[i]);
+    return out;
+}
+
+void read_depth_image(ShadowInputs& inputs, const Scene& scene, const ReferenceImage& seen) {
+    inputs.visible_depths = receiver_depth_range(scene, seen);
+    inputs.seen_receivers = receivers_seen(scene, seen);
+}
+
+void trace_depth_image(ShadowInputs& inputs, const Scene& scene, const WorldTriangles& triangles, int width,
+                       int height) {
+    read_depth_image(inputs, scene, visible_points(scene, triangles, width, height));
+}
+
 DepthRange trace_receiver_depth_range(const Scene& scene, const WorldTriangles& triangles, int width, int height) {
     return receiver_depth_range(scene, visible_points(scene, triangles, width, height));
 }

@@ -19,4 +19,13 @@ constexpr double kVisibleDepthMargin = 0.01;  // of each depth
 // The same from a camera depth image traced for this purpose (primary rays only) at width x height.
 DepthRange trace_receiver_depth_range(const Scene& scene, const WorldTriangles& triangles, int width, int height);
 
+// The image's receiver pixels' points, and its height.
+SeenReceivers receivers_seen(const Scene& scene, const ReferenceImage& seen);
+
+// What a method that reads the camera's depth image takes from it: the depth range and the points
+// (ShadowInputs::visible_depths, seen_receivers); from a traced image of width x height, or one at hand.
+void read_depth_image(ShadowInputs& inputs, const Scene& scene, const ReferenceImage& seen);
+void trace_depth_image(ShadowInputs& inputs, const Scene& scene, const WorldTriangles& triangles, int width,
+                       int height);
+
 }  // namespace shadowlab

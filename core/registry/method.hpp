@@ -28,6 +28,7 @@ struct LightSupport {
 enum class Coverage {
     visible_receivers,  // every receiver point the camera sees (uniform, focused)
     shadowable_points,  // the visible points a caster can shadow: a warp spends no texel elsewhere
+    seen_points,        // the receiver points of the camera's depth image only (virtual: their pages)
 };
 
 enum class Produces {

@@ -13,6 +13,7 @@
 #include "methods/psm.hpp"
 #include "methods/tsm.hpp"
 #include "methods/uniform.hpp"
+#include "methods/virtual_map.hpp"
 #include "methods/xpsm.hpp"
 #include "planar/planar_technique.hpp"
 #include "registry/filter_registry.hpp"
@@ -96,6 +97,15 @@ std::deque<Method>& registry() {
          .lights = kDirectionalOnly,
          .compute_maps = compute_cascades,
          .reads_visible_depths = cascades_read_visible_depths},
+        {.name = "virtual",
+         .title = "Virtual shadow map",
+         .description = "UE5's sun shadows: clipmap levels about the camera in pages, only the pages the view's "
+                        "depth image needs drawn, within a budget",
+         .settings = virtual_settings(),
+         .lights = kDirectionalOnly,
+         .covers = Coverage::seen_points,
+         .compute_maps = compute_virtual,
+         .reads_visible_depths = virtual_reads_visible_depths},
         {.name = "dpsm",
          .title = "Dual-paraboloid shadow map",
          .description = "Brabec et al.: two hemispheres around the light, each a paraboloid onto a disc",

@@ -78,8 +78,9 @@ Inspection inspect_scene(const Scene& scene, const InspectionRequest& request) {
     if (method.makes_maps()) {
         limits::check(limits::map_resolution, "resolution", request.resolution);
         in.resolution = request.resolution;
+        in.inputs.texture_resolution = request.resolution;
         if (method.wants_visible_depths(in.settings))
-            in.inputs.visible_depths = trace_receiver_depth_range(scene, in.triangles, in.image_width, in.image_height);
+            trace_depth_image(in.inputs, scene, in.triangles, in.image_width, in.image_height);
         in.setup = method.compute_maps(in.inputs, in.settings, &in.trace);
         in.lookup = lookup_from(in.settings, in.bias);
     } else {

@@ -24,6 +24,11 @@ std::string map_name(const ShadowSetup& setup, size_t i) {
         case MapSelection::Rule::view_depth: return "cascade " + std::to_string(i + 1);
         case MapSelection::Rule::hemisphere: return i == 0 ? "front" : "back";
         case MapSelection::Rule::cube_face: return std::string("face ") + kFaces[setup.maps[i].cube_face % 6];
+        case MapSelection::Rule::pages: {
+            const PageAddress& a = setup.selection.pages.pages[i];
+            return "level " + std::to_string(a.level) + " page " + std::to_string(a.page.x) + "," +
+                   std::to_string(a.page.y);
+        }
         default: return "map " + std::to_string(i + 1);
     }
 }
