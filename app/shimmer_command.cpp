@@ -50,18 +50,21 @@ void run_shimmer(const ShimmerOptions& o) {
     std::filesystem::create_directories(dir);
     std::ofstream csv(dir / "shimmer.csv");
     if (!csv) throw std::runtime_error((dir / "shimmer.csv").string() + ": cannot write");
-    csv << "frame,judged,wrong,transitions,flips,fallback\n";
+    csv << "frame,judged,wrong,transitions,flips,pages_allocated,pages_kept,pages_freed,texels_fresh,texels_cached,"
+           "fallback\n";
     for (const FrameShimmer& f : shimmer.frames)
-        csv << f.frame << ',' << f.judged << ',' << f.wrong << ',' << f.transitions << ',' << f.flips << ",\""
-            << describe(f.fallbacks) << "\"\n";
+        csv << f.frame << ',' << f.judged << ',' << f.wrong << ',' << f.transitions << ',' << f.flips << ','
+            << f.pages.allocated << ',' << f.pages.kept << ',' << f.pages.freed << ',' << f.texels_fresh << ','
+            << f.texels_cached << ",\"" << describe(f.fallbacks) << "\"\n";
     csv.close();
     const std::string summary = shimmer_summary(shimmer);
     write_chart_png(shimmer_chart(shimmer, "Shimmer: " + method.name + ", camera " + to_string(path.kind) + ", " +
                                                std::to_string(o.resolution) + "², " + summary),
                     (dir / "shimmer.png").string());
     std::cout << "shimmer: " << method.name << ", " << to_string(path.kind) << ", " << path.frames
-              << " frames: " << summary << "\nwrote " << (dir / "shimmer.csv").string() << " and "
-              << (dir / "shimmer.png").string() << "\n";
+              << " frames: " << summary << "\ntexels drawn per frame: " << shimmer.texels_fresh_per_frame()
+              << " fresh, " << shimmer.texels_cached_per_frame() << " with a page cache\nwrote "
+              << (dir / "shimmer.csv").string() << " and " << (dir / "shimmer.png").string() << "\n";
 }
 
 }  // namespace shadowlab

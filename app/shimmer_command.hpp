@@ -2,7 +2,8 @@
 // `shadowlab shimmer SCENE --method M [--set k=v]... [--path translate|rotate|dolly] [--frames N]
 //  [--step S] [--resolution N] [--size WxH] --out DIR`: the camera moved along a path over the
 // static scene; fixed receiver points judged every frame. DIR/shimmer.csv (per frame: points
-// judged, wrong, transitions, flips) and DIR/shimmer.png (the share flipped and the share wrong per
+// judged, wrong, transitions, flips, a virtual map's pages allocated, kept and freed, the texels drawn
+// fresh and with a page cache) and DIR/shimmer.png (the share flipped and the share wrong per
 // frame); the total share of flipped transitions on stdout.
 #include <map>
 #include <string>

@@ -17,7 +17,8 @@ PageMarks mark_pages(const Clipmap& c, const Camera& camera, const SeenReceivers
     for (const glm::dvec3& p : seen.points) {
         const double footprint = pixel_footprint(camera, seen.image_height, p);
         bool held = false;
-        for (int level = level_for_footprint(c, footprint, resolution_bias); level < c.levels() && !held; ++level)
+        const int asked = std::min(level_for_footprint(c, footprint, resolution_bias), c.levels() - 1);
+        for (int level = asked; level < c.levels() && !held; ++level)
             if (const std::optional<PageAddress> page = page_holding(c.table, level, p)) {
                 marks.marked[c.table.index(*page)] = 1;
                 held = true;

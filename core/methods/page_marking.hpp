@@ -20,8 +20,8 @@ struct PageMarks {
 };
 
 // Step 2, marking (UE5's page marking from the depth buffer): every seen receiver point marks the
-// page holding it in the level its footprint asks for (level_for_footprint), or in the finest
-// coarser level whose window holds it.
+// page holding it in the level its footprint asks for (level_for_footprint, at most the coarsest),
+// or in the finest coarser level whose window holds it.
 PageMarks mark_pages(const Clipmap& clipmap, const Camera& camera, const SeenReceivers& seen, double resolution_bias);
 
 struct PageAllocation {

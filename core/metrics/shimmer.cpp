@@ -1,5 +1,6 @@
 #include "metrics/shimmer.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 #include "math/parallel_rows.hpp"
@@ -71,6 +72,21 @@ size_t Shimmer::transitions() const {
     return n;
 }
 
+namespace {
+double per_frame_after_the_first(const std::vector<FrameShimmer>& frames, double FrameShimmer::*texels) {
+    double sum = 0.0;
+    for (std::size_t i = 1; i < frames.size(); ++i) sum += frames[i].*texels;
+    return frames.size() > 1 ? sum / double(frames.size() - 1) : 0.0;
+}
+}  // namespace
+
+double Shimmer::texels_fresh_per_frame() const {
+    return per_frame_after_the_first(frames, &FrameShimmer::texels_fresh);
+}
+double Shimmer::texels_cached_per_frame() const {
+    return per_frame_after_the_first(frames, &FrameShimmer::texels_cached);
+}
+
 double Shimmer::share() const { return transitions() ? static_cast<double>(flips()) / transitions() : 0.0; }
 
 Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample>& samples, const Method& method,
@@ -80,6 +96,7 @@ Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample
     const ShadowLookup lookup = lookup_from(settings, bias);
     Shimmer shimmer;
     std::vector<signed char> before;
+    std::optional<ShadowSetup> previous;
     for (int frame = 0; frame < path.frames; ++frame) {
         const Camera camera = camera_at(c.scene.camera, path, frame);
         const ShadowSetup setup =
@@ -87,7 +104,12 @@ Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample
         const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution, lookup.format);
         const ShadowReader reader(setup, depth, c.scene.light, lookup);
         const std::vector<signed char> now = verdicts(samples, camera, reader);
-        FrameShimmer f{.frame = frame, .fallbacks = setup.fallbacks};
+        const PageTurnover pages = page_turnover(previous ? &*previous : nullptr, setup);
+        FrameShimmer f{.frame = frame,
+                       .fallbacks = setup.fallbacks,
+                       .pages = pages,
+                       .texels_fresh = texels_in_tiles(setup, resolution),
+                       .texels_cached = texels_drawn(setup, pages, resolution)};
         for (size_t i = 0; i < samples.size(); ++i) {
             if (now[i] == kNotJudged) continue;
             ++f.judged;
@@ -98,6 +120,7 @@ Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample
         }
         shimmer.frames.push_back(std::move(f));
         before = now;
+        previous = setup;
     }
     return shimmer;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "metrics/measurement.hpp"
+#include "metrics/page_caching.hpp"
 #include "scene/camera_path.hpp"
 
 namespace shadowlab {
@@ -29,6 +30,11 @@ struct FrameShimmer {
     size_t transitions = 0;       // samples judged in this frame and in the one before
     size_t flips = 0;             // of those, whose verdict changed
     std::vector<Note> fallbacks;  // what the method fell back to in this frame
+    // What drawing the frame's maps costs: a virtual map's pages allocated, kept and freed since the
+    // frame before (metrics/page_caching.hpp), and the texels drawn, every tile's without a cache
+    // (fresh) and with one (cached: a virtual map's new pages; the same as fresh for other setups).
+    PageTurnover pages;
+    double texels_fresh = 0.0, texels_cached = 0.0;
 };
 
 struct Shimmer {
@@ -37,6 +43,9 @@ struct Shimmer {
     size_t flips() const;
     size_t transitions() const;
     double share() const;  // flips / transitions (0 without transitions)
+    // Texels drawn per frame after the first (the first draws everything either way): fresh and cached.
+    double texels_fresh_per_frame() const;
+    double texels_cached_per_frame() const;
 };
 
 // Follows `path` from the context's camera, building the method's maps at `resolution` for every

@@ -1,0 +1,184 @@
+// Virtual shadow maps: the level a footprint marks, the budget, the page table's reads, the
+// aliasing it reaches and what its page cache saves along a camera path.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "exchange/inspection_json.hpp"
+#include "maps/map_lookup.hpp"
+#include "methods/page_marking.hpp"
+#include "methods/virtual_map.hpp"
+#include "metrics/shimmer.hpp"
+#include "reference/visible_depths.hpp"
+#include "scene/scene_loader.hpp"
+#include "test_support.hpp"
+
+using namespace shadowlab;
+using namespace shadowlab::testing;
+
+namespace {
+
+const Method& virtual_method() { return method_or_throw("virtual"); }
+
+ShadowSetup run_virtual(const ShadowInputs& in, std::map<std::string, std::string> set = {}) {
+    return compute_virtual(in, resolve_settings("virtual", virtual_method().settings, set), nullptr);
+}
+
+// The scene's inputs with the camera's depth image traced at 320 x 180 and a texture of `resolution`.
+ShadowInputs seen_inputs(const Scene& scene, int resolution) {
+    ShadowInputs in = gather_inputs(scene);
+    in.texture_resolution = resolution;
+    trace_depth_image(in, scene, tessellate(scene), 320, 180);
+    return in;
+}
+
+Scene default_scene() { return load_scene(source_path("data/scenes/default.json")); }
+
+// A sun straight down on a 100-wide square seen from 20 above with a square 60° camera: every point
+// of the plane lies at view depth 20.
+ShadowInputs plane_seen_from_above(int image_height, int points_per_side) {
+    ShadowInputs in;
+    in.camera = camera_20_units_above_the_origin();
+    in.light.type = LightType::directional;
+    in.light.direction = {0, -1, 0};
+    in.scene_bounds = Aabb{{-50, -1, -50}, {50, 1, 50}};
+    in.texture_resolution = 4096;
+    SeenReceivers seen{.image_height = image_height};
+    for (int i = 0; i < points_per_side; ++i)
+        for (int j = 0; j < points_per_side; ++j)
+            seen.points.push_back(
+                {-5.0 + 10.0 * i / (points_per_side - 1), 0.0, -5.0 + 10.0 * j / (points_per_side - 1)});
+    in.seen_receivers = seen;
+    return in;
+}
+
+}  // namespace
+
+// A pixel at view depth D is 2 D tan(30°) / H wide; level 0's texel is 2 r0 R / 16384 (R the
+// scene's bounding radius); the level marked is floor(log2(footprint / texel0) + bias).
+TEST(Virtual, APlaneAtAKnownDistanceMarksTheLevelTheClosedFormGives) {
+    const int image_height = 300;
+    const ShadowInputs in = plane_seen_from_above(image_height, 21);
+    const double footprint = 2.0 * 20.0 * std::tan(glm::radians(30.0)) / image_height;
+    const double radius = 0.5 * in.scene_bounds.diagonal(), texel0 = 2.0 * radius / 64.0 / 16384.0;
+    for (double bias : {0.0, 1.0, -1.0}) {
+        const int expected = int(std::floor(std::log2(footprint / texel0) + bias));
+        ASSERT_GE(expected, 0);
+        const ShadowSetup setup = run_virtual(in, {{"resolution_bias", std::to_string(bias)}});
+        ASSERT_EQ(setup.selection.rule, MapSelection::Rule::pages);
+        const PageTable& table = setup.selection.pages;
+        ASSERT_FALSE(table.pages.empty());
+        for (const PageAddress& a : table.pages) EXPECT_EQ(a.level, expected) << "bias " << bias;
+        // The pages cover the 10 x 10 square seen: (10 / page width)² of them, give or take a row and column.
+        const double page_width = texel0 * std::ldexp(1.0, expected) * 128.0;
+        const double side = 10.0 / page_width;
+        EXPECT_GE(double(table.pages.size()), side * side);
+        EXPECT_LE(double(table.pages.size()), (side + 2) * (side + 2));
+        EXPECT_TRUE(setup.fallbacks.empty()) << describe(setup.fallbacks);
+    }
+}
+
+TEST(Virtual, EverySeenPointReadsTheFinestResidentPageThatHoldsItInsideTheUnitCube) {
+    const ShadowInputs in = seen_inputs(default_scene(), 2048);
+    const ShadowSetup setup = run_virtual(in);
+    ASSERT_TRUE(in.seen_receivers && !in.seen_receivers->points.empty());
+    const PageTable& table = setup.selection.pages;
+    for (const glm::dvec3& p : in.seen_receivers->points) {
+        const int map = select_map(setup, p);
+        ASSERT_GE(map, 0);
+        EXPECT_TRUE(in_unit_cube(world_to_uvz(setup.maps[map], p), 1e-9));
+        const PageAddress& read = table.pages[map];
+        for (int finer = 0; finer < read.level; ++finer)
+            if (const std::optional<PageAddress> a = page_holding(table, finer, p)) {
+                EXPECT_LT(table.map_of(*a), 0);
+            }
+        // The page's tile is its slot: page_size texels of the texture.
+        EXPECT_DOUBLE_EQ(tile_resolution(setup.maps[map], in.texture_resolution), table.page_size);
+    }
+}
+
+TEST(Virtual, TheBudgetIsNeverExceededAndTheExcessIsNamed) {
+    const ShadowInputs in = seen_inputs(default_scene(), 8192);
+    const int marked = int(run_virtual(in).selection.pages.pages.size());
+    ASSERT_GT(marked, 16);
+    for (int budget : {1, 4, 16, marked - 1, marked, 4096}) {
+        const ShadowSetup setup = run_virtual(in, {{"page_budget", std::to_string(budget)}});
+        const PageTable& table = setup.selection.pages;
+        EXPECT_LE(int(table.pages.size()), budget);
+        EXPECT_EQ(table.counts.marked, marked);
+        EXPECT_EQ(table.counts.budget, budget);
+        EXPECT_EQ(has_note(setup.fallbacks, NoteKind::over_page_budget), budget < marked) << budget;
+        EXPECT_EQ(table.counts.over_budget, std::max(0, marked - int(table.pages.size())));
+        // Every seen point still reads a page, the excess fallen to coarser levels, unless even the
+        // coarsest pages do not fit: the scene's centre is a corner of every level's grid, so the
+        // coarsest level holds the view in up to four pages.
+        std::size_t unread = 0;
+        for (const glm::dvec3& p : in.seen_receivers->points) unread += select_map(setup, p) < 0;
+        EXPECT_EQ(unread > 0, table.counts.dropped > 0) << budget;
+        EXPECT_EQ(table.counts.dropped > 0, budget < 4) << budget;
+        EXPECT_EQ(table.counts.dropped > 0, describe(setup.fallbacks).find("without a slot") != std::string::npos);
+    }
+    // The pool holds (resolution / page_size)² slots: a 512² texture four pages of 128².
+    ShadowInputs small = in;
+    small.texture_resolution = 512;
+    EXPECT_EQ(run_virtual(small).selection.pages.counts.budget, 16);
+}
+
+// Within the budget, a pixel reads texels no wider than itself: m_perspective (Lloyd's factor)
+// lies in (1/2, 1] up to the footprint's change across the image and a texel's diagonal.
+TEST(Virtual, WithinTheBudgetPerspectiveAliasingIsAtMostOneAndAHalf) {
+    const MeasureContext context = prepare_measurement(default_scene(), 640, 360);
+    const Measurement m =
+        measure(context, virtual_method(), resolve_settings("virtual", virtual_method().settings, {}), 2048, -1.0);
+    ASSERT_TRUE(m.pages.has_value());
+    EXPECT_EQ(m.pages->counts.over_budget, 0);
+    EXPECT_GT(m.error.m_perspective.mean, 0.5);
+    EXPECT_LE(m.error.m_perspective.p95, 1.5);
+    EXPECT_LE(m.error.m_perspective.max, 2.0);
+    // The same view at 1024², its 64 slots too few: the bias rises, and aliasing with it.
+    const Measurement tight =
+        measure(context, virtual_method(), resolve_settings("virtual", virtual_method().settings, {}), 1024, -1.0);
+    EXPECT_TRUE(has_note(tight.fallbacks, NoteKind::over_page_budget));
+    EXPECT_GT(tight.error.m_perspective.p95, m.error.m_perspective.p95);
+}
+
+TEST(Virtual, MeasureReportsItsPages) {
+    const ShadowSetup setup = run_virtual(seen_inputs(default_scene(), 2048));
+    const Json pages = pages_json(setup.selection.pages);
+    for (const char* key : {"resident", "budget", "page_size", "levels", "over_budget"})
+        EXPECT_TRUE(pages.contains(key)) << key;
+    EXPECT_EQ(pages["resident"].get<std::size_t>(), setup.maps.size());
+    EXPECT_EQ(pages["budget"].get<int>(), 256);
+    EXPECT_EQ(pages["page_size"].get<int>(), 128);
+    EXPECT_EQ(pages["levels"].get<int>(), 16);
+}
+
+// A page cache draws only the pages a frame newly needs; a sideways path keeps most of them, and
+// pages that keep their texels flip no verdict, as stabilized cascades flip none.
+TEST(Virtual, ACachedSidewaysPathDrawsFarFewerTexelsAndFlipsNoMoreThanStabilizedCascades) {
+    const MeasureContext context = prepare_measurement(default_scene(), 320, 180);
+    const std::vector<ShimmerSample> samples = shimmer_samples(context);
+    const CameraPath path{CameraPath::Kind::translate, 8, 0.0};
+    const Shimmer pages = measure_shimmer(context, samples, virtual_method(),
+                                          resolve_settings("virtual", virtual_method().settings, {}), 2048, -1.0, path);
+    const Method& cascades = method_or_throw("cascades");
+    const Shimmer stabilized =
+        measure_shimmer(context, samples, cascades,
+                        resolve_settings("cascades", cascades.settings, {{"stabilize", "on"}}), 2048, -1.0, path);
+    ASSERT_GT(pages.transitions(), 1000u);
+    EXPECT_LT(pages.texels_cached_per_frame(), 0.1 * pages.texels_fresh_per_frame());
+    EXPECT_LE(pages.flips(), stabilized.flips());
+    std::size_t kept = 0;
+    for (std::size_t i = 1; i < pages.frames.size(); ++i) kept += pages.frames[i].pages.kept;
+    EXPECT_GT(kept, 0u);
+    EXPECT_EQ(stabilized.texels_cached_per_frame(), stabilized.texels_fresh_per_frame());
+}
+
+TEST(Virtual, WithoutADepthImageOrASunItIsTheUniformMapNamed) {
+    ShadowInputs in = gather_inputs(default_scene());
+    EXPECT_TRUE(has_note(run_virtual(in).fallbacks, NoteKind::no_depth_image));
+    in.light.type = LightType::point;
+    in.light.position = {0, 10, 0};
+    trace_depth_image(in, default_scene(), tessellate(default_scene()), 64, 36);
+    EXPECT_TRUE(has_note(run_virtual(in).fallbacks, NoteKind::not_directional));
+}
