@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "geometry/intersection_body.hpp"
+#include "reference/visible_depths.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 
@@ -60,6 +61,25 @@ TEST_P(MethodOnScene, ShadowableVisiblePointsMapIntoTheUnitCube) {
         ASSERT_TRUE(uvz && in_unit_cube(*uvz, 1e-6))
             << method_name << " on " << file << ": (" << (uvz ? uvz->x : NAN) << ", " << (uvz ? uvz->y : NAN) << ", "
             << (uvz ? uvz->z : NAN) << ")";
+    }
+}
+
+// A method that covers only what the camera's depth image shows (virtual: its pages) covers every
+// receiver point of that image.
+TEST_P(MethodOnScene, SeenPointsMapIntoTheUnitCubeOfTheirMap) {
+    const auto& [method_name, file] = GetParam();
+    const Method& method = *find_method(method_name);
+    if (method.covers != Coverage::seen_points) GTEST_SKIP() << "its promise is checked by the tests above";
+    const Scene scene = load_scene(file);
+    ShadowInputs in = gather_inputs(scene);
+    trace_depth_image(in, scene, tessellate(scene), 160, 90);
+    const ShadowSetup setup = run(method, in);
+    EXPECT_TRUE(are_fallbacks(setup.fallbacks)) << describe(setup.fallbacks);
+    if (!in.light.is_directional()) return;  // a sun's clipmap only: the others fall back, checked above
+    ASSERT_FALSE(in.seen_receivers->points.empty()) << file << " shows no receiver: the test would check nothing";
+    for (const glm::dvec3& p : in.seen_receivers->points) {
+        const std::optional<glm::dvec3> uvz = setup_uvz(setup, p);
+        ASSERT_TRUE(uvz && in_unit_cube(*uvz, 1e-9)) << method_name << " on " << file;
     }
 }
 

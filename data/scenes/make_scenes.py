@@ -143,6 +143,15 @@ def grazing_sun(rng):
         {"type": "directional", "direction": travelling(DEFAULT_SUN_AZIMUTH, 0.5)})
 
 
+def overhead_view(rng):
+    return {**default_town_under(
+        "overhead_view",
+        "The default town and sun seen from 60 above at 50 deg down, far / near = 1,000: "
+        "a street's shadows up close and the whole town to the horizon in one view.",
+        {"type": "directional", "direction": travelling(DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION)}),
+        "camera": camera((0, 60, 230), from_angles(0, -50), near=0.4, far=400)}
+
+
 def sun_disc(rng):
     return default_town_under(
         "sun_disc",
@@ -322,7 +331,7 @@ def soft_shadows(rng):
 
 SCENES = [default, light_parallel_behind, light_parallel_front, casters_behind, light_overhead,
           far_near_1e5, box_on_plane, spot, point, volumes, volumes_eye_in_shadow, lamp_room,
-          grazing_sun, sun_disc, soft_shadows]
+          grazing_sun, sun_disc, soft_shadows, overhead_view]
 
 
 def seed_of(make):
