@@ -54,8 +54,8 @@ void run_shimmer(const ShimmerOptions& o) {
            "fallback\n";
     for (const FrameShimmer& f : shimmer.frames)
         csv << f.frame << ',' << f.judged << ',' << f.wrong << ',' << f.transitions << ',' << f.flips << ','
-            << f.pages.allocated << ',' << f.pages.kept << ',' << f.pages.freed << ',' << f.texels_fresh << ','
-            << f.texels_cached << ",\"" << describe(f.fallbacks) << "\"\n";
+            << f.pages.allocated << ',' << f.pages.kept << ',' << f.pages.freed << ',' << std::llround(f.texels_fresh)
+            << ',' << std::llround(f.texels_cached) << ",\"" << describe(f.fallbacks) << "\"\n";
     csv.close();
     const std::string summary = shimmer_summary(shimmer);
     write_chart_png(shimmer_chart(shimmer, "Shimmer: " + method.name + ", camera " + to_string(path.kind) + ", " +
