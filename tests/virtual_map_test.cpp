@@ -7,6 +7,7 @@
 #include "exchange/inspection_json.hpp"
 #include "maps/map_lookup.hpp"
 #include "methods/page_marking.hpp"
+#include "metrics/pixel_cause.hpp"
 #include "methods/virtual_map.hpp"
 #include "metrics/shimmer.hpp"
 #include "reference/visible_depths.hpp"
@@ -181,4 +182,22 @@ TEST(Virtual, WithoutADepthImageOrASunItIsTheUniformMapNamed) {
     in.light.position = {0, 10, 0};
     trace_depth_image(in, default_scene(), tessellate(default_scene()), 64, 36);
     EXPECT_TRUE(has_note(run_virtual(in).fallbacks, NoteKind::not_directional));
+}
+
+// Its texels are sized by the resolution bias, not the texture (the pool): the remedy for
+// under-sampling and projection aliasing lowers the bias by log2 of the factor, rounded up.
+TEST(Virtual, FinerTexelsLowerTheResolutionBiasNotRaiseTheResolution) {
+    const Settings defaults = resolve_settings("virtual", virtual_method().settings, {});
+    const RemedyInputs in{
+        .method = virtual_method(), .settings = defaults, .resolution = 2048, .m_perspective_p95 = 1.2, .m_p95 = 3.5};
+    const std::optional<Remedy> projection = info(PixelCause::projection).remedy(in);
+    ASSERT_TRUE(projection.has_value());
+    EXPECT_EQ(projection->resolution, 2048);
+    EXPECT_EQ(projection->settings.number("resolution_bias"), -2.0);
+    EXPECT_EQ(projection->change, "resolution_bias 0 → -2");
+    const std::optional<Remedy> under = info(PixelCause::under_sampling).remedy(in);
+    ASSERT_TRUE(under.has_value());
+    EXPECT_EQ(under->settings.number("resolution_bias"), -1.0);
+    const Settings finest = resolve_settings("virtual", virtual_method().settings, {{"resolution_bias", "-4"}});
+    EXPECT_FALSE(virtual_finer_texels(finest, 4.0).has_value());
 }

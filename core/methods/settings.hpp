@@ -34,6 +34,12 @@ private:
     std::map<std::string, std::variant<double, std::string>> values_;
 };
 
+// Settings changed, and the change as users read it ("resolution_bias 0 → -2").
+struct SettingsChange {
+    Settings settings;
+    std::string change;
+};
+
 // Defaults overridden by `overrides` (key -> text). Throws std::invalid_argument naming the method,
 // the key and what is allowed, for an unknown key, a word not among the choices, a non-number or a
 // number out of range (in a list: any of its numbers).

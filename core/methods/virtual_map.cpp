@@ -1,6 +1,7 @@
 #include "methods/virtual_map.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "io/value_text.hpp"
@@ -223,5 +224,16 @@ std::vector<SettingSpec> virtual_settings() {
 }
 
 bool virtual_reads_visible_depths(const Settings&) { return true; }
+
+std::optional<SettingsChange> virtual_finer_texels(const Settings& s, double factor) {
+    constexpr double kLeastBias = -4.0;  // the setting's range
+    const double bias = s.number("resolution_bias");
+    const double finer = std::max(kLeastBias, bias - std::max(1.0, std::ceil(std::log2(factor))));
+    if (!(finer < bias)) return std::nullopt;
+    SettingsChange out{.settings = s,
+                       .change = "resolution_bias " + significant(bias, 3) + " → " + significant(finer, 3)};
+    out.settings.set("resolution_bias", finer);
+    return out;
+}
 
 }  // namespace shadowlab

@@ -62,8 +62,18 @@ std::optional<Remedy> less_bias(const RemedyInputs& in) {
 }
 
 // Under-sampling and projection aliasing: the resolution at which the factor's 95th percentile
-// comes to one texel per pixel (a power of two at least twice the run's, at most 8192).
+// comes to one texel per pixel (a power of two at least twice the run's, at most 8192), or the
+// method's own finer texels where a setting sizes them (Method::finer_texels).
 std::optional<Remedy> resolution_for(const RemedyInputs& in, double m_p95) {
+    if (in.method.finer_texels) {  // its texels are a setting's, not the texture's
+        std::optional<SettingsChange> finer = in.method.finer_texels(in.settings, m_p95);
+        if (!finer) return std::nullopt;
+        return Remedy{.change = std::move(finer->change),
+                      .method = &in.method,
+                      .settings = std::move(finer->settings),
+                      .resolution = in.resolution,
+                      .bias = in.bias};
+    }
     int target = in.resolution * 2;
     while (target < 8192 && double(target) < in.resolution * m_p95) target *= 2;
     target = std::min(target, 8192);

@@ -47,6 +47,11 @@ using ComputeGeometry = GeometryResult (*)(const Scene& scene, const WorldTriang
 // Whether a map method's settings read ShadowInputs::visible_depths (the camera's depth image).
 using ReadsVisibleDepths = bool (*)(const Settings& settings);
 
+// How a map method whose texel size is a setting rather than the texture's resolution makes its
+// texels `factor` times finer (virtual: a lower resolution bias); nullopt when it cannot. Methods
+// without one get finer texels from a higher resolution.
+using FinerTexels = std::optional<SettingsChange> (*)(const Settings& settings, double factor);
+
 struct Method {
     std::string name;         // as on the command line: "focused"
     std::string title;        // "Focused shadow map"
@@ -57,6 +62,7 @@ struct Method {
     ComputeMaps compute_maps = nullptr;                 // a shadow-map method, or
     ComputeGeometry compute_geometry = nullptr;         // a geometric technique: exactly one is set
     ReadsVisibleDepths reads_visible_depths = nullptr;  // a map method that may: when its settings say so
+    FinerTexels finer_texels = nullptr;                 // a map method whose texel size is a setting
 
     Produces produces() const { return compute_maps ? Produces::maps : Produces::geometry; }
     bool makes_maps() const { return produces() == Produces::maps; }
