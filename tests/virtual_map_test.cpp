@@ -10,6 +10,7 @@
 #include "metrics/pixel_cause.hpp"
 #include "methods/virtual_map.hpp"
 #include "metrics/shimmer.hpp"
+#include "raster/depth_map.hpp"
 #include "reference/visible_depths.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
@@ -200,4 +201,21 @@ TEST(Virtual, FinerTexelsLowerTheResolutionBiasNotRaiseTheResolution) {
     EXPECT_EQ(under->settings.number("resolution_bias"), -1.0);
     const Settings finest = resolve_settings("virtual", virtual_method().settings, {{"resolution_bias", "-4"}});
     EXPECT_FALSE(virtual_finer_texels(finest, 4.0).has_value());
+}
+
+// The pages are drawn from the casters binned to them; every page clipping every caster (the same
+// maps under another rule) draws the same texels.
+TEST(Virtual, PagesDrawnFromTheirBinnedCastersEqualPagesDrawnFromEveryCaster) {
+    const Scene scene = default_scene();
+    const ShadowInputs in = seen_inputs(scene, 2048);
+    const ShadowSetup setup = run_virtual(in);
+    ASSERT_GT(setup.maps.size(), 20u);
+    ShadowSetup unbinned = setup;
+    unbinned.selection.rule = MapSelection::Rule::tile_bounds;
+    const WorldTriangles triangles = tessellate(scene);
+    const std::vector<bool> casters = caster_flags(scene);
+    const DepthMap binned = rasterize_depth(triangles, casters, setup, 2048);
+    const DepthMap every = rasterize_depth(triangles, casters, unbinned, 2048);
+    EXPECT_TRUE(binned.codes == every.codes);
+    EXPECT_LT(std::count(binned.codes.begin(), binned.codes.end(), binned.codes.back()), long(binned.codes.size()));
 }

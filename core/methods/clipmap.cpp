@@ -33,9 +33,11 @@ Clipmap clipmap_around(const ShadowInputs& in, const ClipmapSpec& spec) {
     return c;
 }
 
-int level_for_footprint(const Clipmap& c, double footprint, double bias) {
-    const double level = std::floor(std::log2(footprint / c.finest_texel) + bias);
-    return level > 0.0 ? static_cast<int>(std::min(level, 1e6)) : 0;
+double footprint_level(const Clipmap& c, double footprint) { return std::log2(footprint / c.finest_texel); }
+
+int level_asked(double footprint_level, double bias) {
+    const double level = std::floor(footprint_level + bias);
+    return level > 0.0 ? static_cast<int>(std::min(level, 1e6)) : 0;  // NaN: the finest
 }
 
 }  // namespace shadowlab

@@ -33,10 +33,14 @@ struct Clipmap {
 // same for every level so that depths compare across levels.
 Clipmap clipmap_around(const ShadowInputs& inputs, const ClipmapSpec& spec);
 
-// The level whose texel matches a footprint (a pixel's width across its view ray, in world units):
-// the coarsest whose texel is at most the footprint, floor(log2(footprint / finest_texel) + bias),
-// so that m_perspective lies in (1/2, 1] at bias 0 (Lloyd's m, metrics/shadow_error.hpp); a positive
-// bias coarsens (fewer pages), a negative one refines. At least 0; may exceed the coarsest level.
-int level_for_footprint(const Clipmap& clipmap, double footprint, double bias);
+// A footprint (a pixel's width across its view ray, in world units) in levels: log2(footprint /
+// finest_texel), the level whose texel it equals.
+double footprint_level(const Clipmap& clipmap, double footprint);
+
+// The level whose texel matches a footprint of `footprint_level`: the coarsest whose texel is at
+// most the footprint, floor(footprint_level + bias), so that m_perspective lies in (1/2, 1] at bias
+// 0 (Lloyd's m, metrics/shadow_error.hpp); a positive bias coarsens (fewer pages), a negative one
+// refines. At least 0; may exceed the coarsest level.
+int level_asked(double footprint_level, double bias);
 
 }  // namespace shadowlab

@@ -5,19 +5,28 @@
 
 namespace shadowlab {
 
-double pixel_footprint(const Camera& camera, int image_height, const glm::dvec3& p) {
+double footprint_width(const Camera& camera, int image_height, const glm::dvec3& p) {
     const double depth = glm::dot(p - camera.position, camera.view_direction());
     return 2.0 * camera.half_extent_at(depth).y / image_height;
 }
 
 int PageMarks::count() const { return static_cast<int>(std::count(marked.begin(), marked.end(), 1)); }
 
-PageMarks mark_pages(const Clipmap& c, const Camera& camera, const SeenReceivers& seen, double resolution_bias) {
+std::vector<double> footprint_levels(const Clipmap& c, const Camera& camera, const SeenReceivers& seen) {
+    std::vector<double> levels;
+    levels.reserve(seen.points.size());
+    for (const glm::dvec3& p : seen.points)
+        levels.push_back(footprint_level(c, footprint_width(camera, seen.image_height, p)));
+    return levels;
+}
+
+PageMarks mark_pages(const Clipmap& c, const SeenReceivers& seen, const std::vector<double>& levels,
+                     double resolution_bias) {
     PageMarks marks{.marked = std::vector<std::uint8_t>(c.table.resident.size(), 0)};
-    for (const glm::dvec3& p : seen.points) {
-        const double footprint = pixel_footprint(camera, seen.image_height, p);
+    for (std::size_t i = 0; i < seen.points.size(); ++i) {
+        const glm::dvec3& p = seen.points[i];
         bool held = false;
-        const int asked = std::min(level_for_footprint(c, footprint, resolution_bias), c.levels() - 1);
+        const int asked = std::min(level_asked(levels[i], resolution_bias), c.levels() - 1);
         for (int level = asked; level < c.levels() && !held; ++level)
             if (const std::optional<PageAddress> page = page_holding(c.table, level, p)) {
                 marks.marked[c.table.index(*page)] = 1;
@@ -59,12 +68,13 @@ void keep_nearest(std::vector<PageAddress>& pages, const Clipmap& c, int keep) {
 PageAllocation allocate_pages(const Clipmap& c, const Camera& camera, const SeenReceivers& seen, double resolution_bias,
                               int budget) {
     constexpr int kStepsPerLevel = 8;
-    PageAllocation out{.marks = mark_pages(c, camera, seen, resolution_bias), .budget = budget};
+    const std::vector<double> levels = footprint_levels(c, camera, seen);
+    PageAllocation out{.marks = mark_pages(c, seen, levels, resolution_bias), .budget = budget};
     PageMarks fitted = out.marks;
     if (fitted.count() > budget) {
         // The least added bias that fits, by bisection over its steps (the count falls as the bias rises).
         auto marks_at = [&](int steps) {
-            return mark_pages(c, camera, seen, resolution_bias + double(steps) / kStepsPerLevel);
+            return mark_pages(c, seen, levels, resolution_bias + double(steps) / kStepsPerLevel);
         };
         int lo = 0, hi = c.levels() * kStepsPerLevel;
         while (hi - lo > 1) {

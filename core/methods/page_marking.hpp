@@ -9,7 +9,10 @@ namespace shadowlab {
 
 // A pixel's width across its view ray at p, in world units: the image's height at p's view depth
 // over its pixels (half_extent_at: growing with depth for a pinhole, fixed for an orthographic camera).
-double pixel_footprint(const Camera& camera, int image_height, const glm::dvec3& p);
+double footprint_width(const Camera& camera, int image_height, const glm::dvec3& p);
+
+// Every seen point's footprint in levels (footprint_level), computed once for every marking.
+std::vector<double> footprint_levels(const Clipmap& clipmap, const Camera& camera, const SeenReceivers& seen);
 
 struct PageMarks {
     std::vector<std::uint8_t> marked;  // as PageTable::resident: 1 where a seen point needs the page
@@ -20,9 +23,10 @@ struct PageMarks {
 };
 
 // Step 2, marking (UE5's page marking from the depth buffer): every seen receiver point marks the
-// page holding it in the level its footprint asks for (level_for_footprint, at most the coarsest),
-// or in the finest coarser level whose window holds it.
-PageMarks mark_pages(const Clipmap& clipmap, const Camera& camera, const SeenReceivers& seen, double resolution_bias);
+// page holding it in the level its footprint asks for (level_asked, at most the coarsest), or in
+// the finest coarser level whose window holds it. `levels`: footprint_levels of the seen points.
+PageMarks mark_pages(const Clipmap& clipmap, const SeenReceivers& seen, const std::vector<double>& levels,
+                     double resolution_bias);
 
 struct PageAllocation {
     std::vector<PageAddress> resident;  // in slot order: level, then rows of pages

@@ -358,6 +358,50 @@ void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_pe
     });
 }
 
+// Under a page table (a virtual map) each resident page is drawn from the casters that meet it
+// rather than from every caster: each level's vertices projected once (orthographic: w = 1), each
+// triangle binned to the resident pages its (u, v) box meets, widened by a hair so that a triangle
+// on a page's edge reaches both pages (a page's own clipping then cuts it exactly).
+std::vector<WorldTriangles> casters_per_page(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
+                                             const ShadowSetup& setup) {
+    const PageTable& table = setup.selection.pages;
+    std::vector<std::vector<int>> chosen(setup.maps.size());
+    std::vector<bool> level_in_use(table.levels.size(), false);
+    for (const PageAddress& a : table.pages) level_in_use[a.level] = true;
+    constexpr double kHair = 1e-9;  // of a page
+    const int last = table.pages_per_side - 1;
+    for (std::size_t level = 0; level < table.levels.size(); ++level) {
+        if (!level_in_use[level]) continue;
+        std::vector<glm::dvec2> uv(triangles.vertices.size());
+        for (std::size_t i = 0; i < uv.size(); ++i)
+            uv[i] = glm::dvec2(table.levels[level].world_to_uvz * glm::dvec4(triangles.vertices[i], 1.0)) *
+                    double(table.pages_per_side);
+        for (std::size_t t = 0; t < triangles.triangles.size(); ++t) {
+            if (!casts_per_object.at(triangles.object[t])) continue;
+            const auto& [a, b, c] = triangles.triangles[t];
+            const glm::dvec2 lo = glm::min(uv[a], glm::min(uv[b], uv[c])) - kHair;
+            const glm::dvec2 hi = glm::max(uv[a], glm::max(uv[b], uv[c])) + kHair;
+            if (!(hi.x >= 0.0 && hi.y >= 0.0 && lo.x <= table.pages_per_side && lo.y <= table.pages_per_side)) continue;
+            const glm::ivec2 first(std::max(0, int(std::floor(lo.x))), std::max(0, int(std::floor(lo.y))));
+            const glm::ivec2 final(std::min(last, int(std::floor(hi.x))), std::min(last, int(std::floor(hi.y))));
+            for (int y = first.y; y <= final.y; ++y)
+                for (int x = first.x; x <= final.x; ++x)
+                    if (const int map = table.map_of({.level = int(level), .page = {x, y}}); map >= 0)
+                        chosen[map].push_back(int(t));
+        }
+    }
+    std::vector<WorldTriangles> out(setup.maps.size());
+    for (std::size_t map = 0; map < chosen.size(); ++map)
+        for (int t : chosen[map]) {
+            WorldTriangles& page = out[map];
+            const int base = static_cast<int>(page.vertices.size());
+            for (int k = 0; k < 3; ++k) page.vertices.push_back(triangles.vertices[triangles.triangles[t][k]]);
+            page.triangles.push_back({base, base + 1, base + 2});
+            page.object.push_back(triangles.object[t]);
+        }
+    return out;
+}
+
 }  // namespace
 
 DepthMap::DepthMap(int resolution, const DepthFormat& format)
@@ -370,6 +414,11 @@ void DepthMap::set(int x, int y, double depth) { codes[index(x, y)] = depth_code
 DepthMap rasterize_depth(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
                          const ShadowSetup& setup, int resolution, const DepthFormat& format) {
     DepthMap out(resolution, format);
+    if (setup.selection.rule == MapSelection::Rule::pages) {
+        const std::vector<WorldTriangles> casters = casters_per_page(triangles, casts_per_object, setup);
+        for (std::size_t i = 0; i < setup.maps.size(); ++i) draw_map(casters[i], casts_per_object, setup.maps[i], out);
+        return out;
+    }
     for (const ShadowMap& map : setup.maps) {
         if (splits_casters(map))  // split for this map's curvature and tile: the edges a GPU draws straight
             draw_map(split_casters(triangles, casts_per_object, map, resolution), casts_per_object, map, out);
