@@ -5,7 +5,13 @@
 # scripts/perf.sh.
 set -euo pipefail
 cd "$(dirname "$(readlink -f "$0")")/.."
-scripts/format_check.sh
-scripts/build.sh
-xvfb-run -a ctest --test-dir build --output-on-failure -j2 -LE perf
-scripts/sanitize.sh
+stage() {  # stage NAME COMMAND...: runs it and says how long it took
+  local name=$1 start=$SECONDS
+  shift
+  "$@"
+  echo "test.sh: $name took $((SECONDS - start)) s"
+}
+stage "format check" scripts/format_check.sh
+stage "build" scripts/build.sh
+stage "tests" xvfb-run -a ctest --test-dir build --output-on-failure -j2 -LE perf
+stage "sanitizers and fuzzers" scripts/sanitize.sh
