@@ -114,9 +114,8 @@ MapArrays map_arrays(const std::vector<ShadowMap>& maps, int resolution) {
 }
 MapArrays map_arrays(const ShadowSetup& setup, int resolution) { return map_arrays(setup.maps, resolution); }
 
-// Rule::pages: the page table as the shaders read it (page_table.glsl), the resident pages' maps
-// per level, and each map's slot: its viewport in the first row, its tile's first and last texel
-// in the second.
+// Rule::pages: each map's slot of the pool as page_table.glsl reads it, one texel per map in two
+// rows: its viewport in the first, its tile's first and last texel (tile_of) in the second.
 std::vector<glm::vec4> page_slots(const ShadowSetup& setup, int resolution) {
     const size_t count = setup.maps.size();
     std::vector<glm::vec4> slots(2 * count);

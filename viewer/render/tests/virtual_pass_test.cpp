@@ -131,6 +131,27 @@ TEST(GpuAgreesWithCpuOnVirtualMaps, LitMaskOnShippedScenes) {
     }
 }
 
+// Every depth format, reversed Z included: each page drawn with its reversed depth and read back
+// as the CPU reads it.
+TEST(GpuAgreesWithCpuOnVirtualMaps, LitMaskInEachDepthFormat) {
+    const Scene scene = shipped_scene("default", kWidth, kHeight);
+    const std::vector<DepthFormat> formats = depth_formats();
+    ASSERT_EQ(formats.size(), 6u);
+    for (const DepthFormat& format : formats) {
+        const Inspection in =
+            inspect_scene(scene, {.method = "virtual", .settings = depth_format_settings(format), .resolution = 2048});
+        ASSERT_EQ(in.depth().format, format);
+        expect_many_pages(in);
+        const Agreement a = gpu_against_cpu_lookup(in, kWidth, kHeight);
+        ASSERT_EQ(a.undrawn, 0u);
+        ASSERT_GT(a.compared, kWidth * kHeight / 4u);
+        EXPECT_GE(a.share(), 0.995) << describe(format) << ": " << a.compared - a.agreed << " of " << a.compared
+                                    << " pixels differ";
+        std::cout << "virtual on default, " << describe(format) << ": GPU and CPU agree on " << a.agreed << " of "
+                  << a.compared << " pixels away from edges\n";
+    }
+}
+
 // Each filter reads through the page the CPU reads, its taps kept in the page's tile: the
 // visibility per pixel against ShadowReader's, on the floating box (its shadow in view, a sun 2° wide
 // for PCSS).
