@@ -95,10 +95,10 @@ int texture_format(DepthEncoding encoding) {
     return vtkTextureObject::Float32;
 }
 
-MapArrays map_arrays(const ShadowSetup& setup, int resolution) {
+MapArrays map_arrays(const std::vector<ShadowMap>& maps, int resolution) {
     MapArrays a;
-    for (size_t i = 0; i < setup.maps.size(); ++i) {
-        const ShadowMap& map = setup.maps[i];
+    for (size_t i = 0; i < maps.size(); ++i) {
+        const ShadowMap& map = maps[i];
         const Tile tile = tile_of(map, resolution);
         a.projection[i] = static_cast<int>(map.projection);
         a.world_to_uvz[i] = glm::mat4(map.world_to_uvz);
@@ -111,6 +111,62 @@ MapArrays map_arrays(const ShadowSetup& setup, int resolution) {
         a.tile_texels[i] = glm::vec4(tile.x, tile.y, tile.x + tile.width - 1, tile.y + tile.height - 1);
     }
     return a;
+}
+MapArrays map_arrays(const ShadowSetup& setup, int resolution) { return map_arrays(setup.maps, resolution); }
+
+// Rule::pages: each map's slot of the pool as page_table.glsl reads it, one texel per map in two
+// rows: its viewport in the first, its tile's first and last texel (tile_of) in the second.
+std::vector<glm::vec4> page_slots(const ShadowSetup& setup, int resolution) {
+    const size_t count = setup.maps.size();
+    std::vector<glm::vec4> slots(2 * count);
+    for (size_t i = 0; i < count; ++i) {
+        const Tile tile = tile_of(setup.maps[i], resolution);
+        slots[i] = glm::vec4(setup.maps[i].viewport);
+        slots[count + i] = glm::vec4(tile.x, tile.y, tile.x + tile.width - 1, tile.y + tile.height - 1);
+    }
+    return slots;
+}
+
+// Rule::pages: what SetSetup takes (the shaders compute each page's matrix as a linear map's, and
+// hold kMaxPageLevels levels), or why not.
+void check_pages(const ShadowSetup& setup) {
+    const PageTable& t = setup.selection.pages;
+    const size_t levels = t.levels.size(), per_level = size_t(t.pages_per_side) * size_t(t.pages_per_side);
+    const auto fail = [](const std::string& why) { throw std::invalid_argument("ShadowMapPass: " + why); };
+    if (levels > size_t(ShadowMapPass::kMaxPageLevels))
+        fail("a page table of " + std::to_string(levels) + " levels; the GPU pass holds at most " +
+             std::to_string(ShadowMapPass::kMaxPageLevels));
+    if (t.resident.size() != levels * per_level || t.pages.size() != setup.maps.size())
+        fail("a page table whose resident pages do not match its levels and the setup's maps");
+    for (const ShadowMap& map : setup.maps)
+        if (map.projection != Projection::linear) fail("a page that is not a linear map");
+}
+
+// Rule::pages: stage 2's per-map arrays as plain variables, which shadowSelectPage (page_table.glsl)
+// fills with the selected page as map 0, and the selection by page: the general program's text with
+// these lines exchanged, so that every other rule's programs stay as they are.
+std::string paged(std::string text, const std::vector<std::pair<std::string, std::string>>& exchanges) {
+    for (const auto& [from, to] : exchanges) {
+        const size_t at = text.find(from);
+        if (at == std::string::npos) throw std::logic_error("ShadowMapPass: no '" + from + "' in the lookup's GLSL");
+        text.replace(at, from.size(), to);
+    }
+    return text;
+}
+std::string paged_declarations(std::string text) {
+    return paged(std::move(text),
+                 {{"uniform mat4 shadowMapWorldToUvz[shadowMaxMaps];", "mat4 shadowMapWorldToUvz[shadowMaxMaps];"},
+                  {"uniform vec4 shadowMapViewport[shadowMaxMaps];", "vec4 shadowMapViewport[shadowMaxMaps];"},
+                  {"uniform vec4 shadowMapTileTexels[shadowMaxMaps];", "vec4 shadowMapTileTexels[shadowMaxMaps];"}});
+}
+std::string paged_lookup(std::string text) {
+    return paged(std::move(text), {{"int i = shadowSelectMap(p);", "int i = shadowSelectPage(p);"}});
+}
+// The cascade overlay under pages: the selected page's level's colour (no page blends).
+std::string paged_overlay(std::string text) {
+    return paged(std::move(text),
+                 {{"tint = w > 0.0 ? mix(shadowPalette[i], shadowPalette[i + 1], w) : shadowPalette[i];",
+                   "tint = shadowPalette[shadowSelectedLevel % shadowMaxMaps];"}});
 }
 
 // Triangles as an actor whose vertices reach the shaders unchanged: stage 1 reads vertexMC as the
@@ -171,6 +227,18 @@ bool set_lookup_uniforms(ProgramUniforms& program, MapArrays& maps, const Shadow
                    program.SetUniformi("shadowSelectionSplitCount", static_cast<int>(splits)),
                    program.SetUniformf("shadowSelectionBlendBand", static_cast<float>(s.blend_band)),
                    program.SetUniform3f("shadowSelectionCentre", glm::value_ptr(s.centre)));
+}
+
+// Stage 2 under Rule::pages: the levels, the table's size and the two textures' units.
+bool set_page_uniforms(ProgramUniforms& program, const PageTable& table, int table_unit, int slots_unit) {
+    glm::mat4 levels[ShadowMapPass::kMaxPageLevels]{};
+    for (size_t k = 0; k < table.levels.size(); ++k) levels[k] = glm::mat4(table.levels[k].world_to_uvz);
+    return all_set(program.SetUniformi("shadowPageLevelCount", static_cast<int>(table.levels.size())),
+                   program.SetUniformMatrix4x4v("shadowPageLevelWorldToUvz", ShadowMapPass::kMaxPageLevels,
+                                                glm::value_ptr(levels[0])),
+                   program.SetUniformi("shadowPagesPerSide", table.pages_per_side),
+                   program.SetUniformi("shadowPageTable", table_unit),
+                   program.SetUniformi("shadowPageSlots", slots_unit));
 }
 
 // Stage 2: the overlay, its map palette and its ramp (render/map_overlay.hpp).
@@ -320,11 +388,14 @@ ShadowMapPass::ShadowMapPass() : depth_pass_(vtkSmartPointer<vtkOpaquePass>::New
 ShadowMapPass::~ShadowMapPass() = default;
 
 void ShadowMapPass::SetSetup(const ShadowSetup& setup, int resolution) {
-    if (setup.maps.size() > static_cast<size_t>(kMaxMaps))
+    if (setup.selection.rule == MapSelection::Rule::pages)
+        check_pages(setup);
+    else if (setup.maps.size() > static_cast<size_t>(kMaxMaps))
         throw std::invalid_argument("ShadowMapPass: the setup has " + std::to_string(setup.maps.size()) +
                                     " maps; the GPU pass holds at most " + std::to_string(kMaxMaps));
     setup_ = setup;
     resolution_ = resolution;
+    page_textures_current_ = false;
     split_casters_per_map();
     Modified();
 }
@@ -393,6 +464,7 @@ void ShadowMapPass::Render(const vtkRenderState* s) {
     NumberOfRenderedProps = 0;
     auto* window = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
     prepare_targets(window);
+    if (paged()) prepare_page_textures(window);
     render_depth(s, window);
     render_shaded(s);
 }
@@ -415,6 +487,43 @@ void ShadowMapPass::prepare_targets(vtkOpenGLRenderWindow* window) {
     colour_->Allocate2D(resolution_, resolution_, 4, VTK_UNSIGNED_CHAR);
     fbo_ = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     fbo_->SetContext(window);
+}
+
+// Rule::pages: the page table and the slots as textures, read by texelFetch alone (nearest, no mipmaps).
+void ShadowMapPass::prepare_page_textures(vtkOpenGLRenderWindow* window) {
+    if (page_textures_current_ && page_table_ && page_table_->GetContext() == window) return;
+    const auto texture = [window](unsigned internal_format, unsigned format, unsigned type) {
+        auto t = vtkSmartPointer<vtkTextureObject>::New();
+        t->SetContext(window);
+        t->SetInternalFormat(internal_format);
+        t->SetFormat(format);
+        t->SetDataType(type);
+        t->SetMinificationFilter(vtkTextureObject::Nearest);
+        t->SetMagnificationFilter(vtkTextureObject::Nearest);
+        t->SetWrapS(vtkTextureObject::ClampToEdge);
+        t->SetWrapT(vtkTextureObject::ClampToEdge);
+        return t;
+    };
+    const PageTable& table = setup_.selection.pages;
+    std::vector<int> resident = table.resident;
+    const auto side = static_cast<unsigned>(table.pages_per_side);
+    const auto rows = static_cast<unsigned>(table.levels.size()) * side;
+    if (rows == 0) resident = {-1};  // a table without levels: one texel, no page
+    GLint max_side = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_side);
+    if (rows > static_cast<unsigned>(max_side) || setup_.maps.size() > static_cast<size_t>(max_side))
+        throw std::invalid_argument("ShadowMapPass: a page table of " + std::to_string(rows) + " rows and " +
+                                    std::to_string(setup_.maps.size()) + " pages; this OpenGL's textures hold " +
+                                    std::to_string(max_side) + " texels per side");
+    page_table_ = texture(GL_R32I, GL_RED_INTEGER, GL_INT);
+    if (!page_table_->Create2DFromRaw(std::max(side, 1u), std::max(rows, 1u), 1, VTK_INT, resident.data()))
+        throw std::runtime_error("ShadowMapPass: the page table's texture could not be made");
+    std::vector<glm::vec4> slots = page_slots(setup_, resolution_);
+    if (slots.empty()) slots.assign(2, glm::vec4(0.0f));  // no page: nothing read
+    page_slots_ = texture(GL_RGBA32F, GL_RGBA, GL_FLOAT);
+    if (!page_slots_->Create2DFromRaw(static_cast<unsigned>(slots.size() / 2), 2, 4, VTK_FLOAT, slots.data()))
+        throw std::runtime_error("ShadowMapPass: the page slots' texture could not be made");
+    page_textures_current_ = true;
 }
 
 // Stage 1: the casters' depth, each map into its own tile of the texture, cleared to the far value
@@ -490,10 +599,18 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
     s->GetRenderer()->GetTiledSizeAndOrigin(&width, &image_height_, &image_origin_.x, &image_origin_.y);
     enter(Stage::shade);
     depth_->Activate();
+    if (paged()) {
+        page_table_->Activate();
+        page_slots_->Activate();
+    }
     PreRender(s);
     shade_->Render(s);
     NumberOfRenderedProps = shade_->GetNumberOfRenderedProps();
     PostRender(s);
+    if (paged()) {
+        page_slots_->Deactivate();
+        page_table_->Deactivate();
+    }
     depth_->Deactivate();
 }
 
@@ -506,14 +623,22 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
         return true;
     }
     pass_world_position(vertex);
-    vtkShaderProgram::Substitute(
-        fragment, "//VTK::Light::Dec",
-        "//VTK::Light::Dec\n" + projection + stage2_switches(lookup_, output_, overlay_).declarations() +
-            glsl("map_lookup", "depth_bias", "hash", "kernel_taps", "shadow_reader", "chebyshev", "moment_map") +
-            filters_glsl() + glsl("map_overlay"),
-        false);
+    std::string declarations =
+        projection + stage2_switches(lookup_, output_, overlay_).declarations() +
+        glsl("map_lookup", "depth_bias", "hash", "kernel_taps", "shadow_reader", "chebyshev", "moment_map") +
+        filters_glsl();
+    std::string overlay = glsl("map_overlay");
+    std::string lookup = glsl("shadow_lookup");
+    if (paged()) {  // a program of its own: the per-map arrays filled by the page selection
+        declarations = paged_declarations(std::move(declarations)) +
+                       glsl_int_constant("shadowMaxPageLevels", kMaxPageLevels) + glsl("page_table");
+        overlay = paged_overlay(std::move(overlay));
+        lookup = paged_lookup(std::move(lookup));
+    }
+    declarations += overlay;
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + declarations, false);
     declare_surface_shading(fragment);  // before the lookup's declarations, which use it
-    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", glsl("shadow_lookup"), false);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", lookup, false);
     return true;
 }
 
@@ -530,12 +655,19 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbs
     ProgramUniforms program(shader_program);
     const DepthFormat& format = lookup_.format;
     if (stage_ == Stage::depth) {
-        MapArrays drawn = map_arrays(drawn_setup(setup_, format), resolution_);
-        return all_set(set_projection_uniforms(program, drawn), program.SetUniformi("shadowDrawnMap", drawn_map_),
-                       program.SetUniform4f("shadowDrawnViewport", glm::value_ptr(drawn.viewport[drawn_map_])),
+        // Pages: the drawn page alone, as map 0 (a setup of pages outgrows the arrays).
+        const int drawn_map = paged() ? 0 : drawn_map_;
+        MapArrays drawn =
+            paged()
+                ? map_arrays({format.reversed ? with_reversed_depth(setup_.maps[drawn_map_]) : setup_.maps[drawn_map_]},
+                             resolution_)
+                : map_arrays(drawn_setup(setup_, format), resolution_);
+        return all_set(set_projection_uniforms(program, drawn), program.SetUniformi("shadowDrawnMap", drawn_map),
+                       program.SetUniform4f("shadowDrawnViewport", glm::value_ptr(drawn.viewport[drawn_map])),
                        program.SetUniformi("shadowDepthZeroToOne", format.reversed));
     }
-    MapArrays maps = map_arrays(setup_, resolution_);
+    // Pages: the arrays the page selection fills are no uniforms; the others stay zero (linear maps).
+    MapArrays maps = paged() ? MapArrays{} : map_arrays(setup_, resolution_);
     const bool unlit = output_ != Output::shaded;  // a grey level, white for lit: the lit mask or the visibility
     return all_set(set_projection_uniforms(program, maps), set_lookup_uniforms(program, maps, setup_),
                    program.SetUniformi("shadowDepth", depth_->GetTextureUnit()),
@@ -544,7 +676,9 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbs
                    program.SetUniformi("shadowLitThreshold", output_ == Output::lit_mask),
                    set_filter_uniforms(program, lookup_, light_, taps_, image_origin_, image_height_),
                    set_surface_shading_uniforms(shader_program, frame_, unlit), set_overlay_uniforms(program, ramp_),
-                   stage2_switches(lookup_, output_, overlay_).set(program));
+                   stage2_switches(lookup_, output_, overlay_).set(program),
+                   !paged() || set_page_uniforms(program, setup_.selection.pages, page_table_->GetTextureUnit(),
+                                                 page_slots_->GetTextureUnit()));
 }
 
 void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {
@@ -555,8 +689,11 @@ void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {
     if (fbo_) fbo_->ReleaseGraphicsResources(w);
     if (depth_) depth_->ReleaseGraphicsResources(w);
     if (colour_) colour_->ReleaseGraphicsResources(w);
+    if (page_table_) page_table_->ReleaseGraphicsResources(w);
+    if (page_slots_) page_slots_->ReleaseGraphicsResources(w);
     fbo_ = nullptr;
-    depth_ = colour_ = nullptr;
+    depth_ = colour_ = page_table_ = page_slots_ = nullptr;
+    page_textures_current_ = false;
 }
 
 }  // namespace shadowlab

@@ -1,7 +1,8 @@
 #pragma once
-// Shadow mapping with a method's own maps: any number of them (up to kMaxMaps), each linear (any
-// world_to_uvz, perspective warps included), a paraboloid hemisphere or a cube face, each in its
-// tile of one depth texture. Our own render pass, because vtkShadowMapPass fixes its own light camera.
+// Shadow mapping with a method's own maps: up to kMaxMaps of them, each linear (any world_to_uvz,
+// perspective warps included), a paraboloid hemisphere or a cube face, or any number of a virtual
+// map's pages (MapSelection::Rule::pages), each in its tile of one depth texture. Our own render
+// pass, because vtkShadowMapPass fixes its own light camera.
 //
 // Stage 1 renders the casters' depth into an FBO depth texture of the lookup's depth format
 // (GL_DEPTH_COMPONENT16, 24 or 32F; reversed: s = 1 − d from each map's reversed depth, with
@@ -9,9 +10,12 @@
 // map's tile (placed by the vertex shader exactly where the CPU rasterizer places it, however its
 // edges fall between texels, and scissored to the tile's texels; depth clamped, as the CPU rasterizer
 // clamps casters before the near plane; a paraboloid clipped to its hemisphere, and its casters split first
-// where the map asks, as the CPU rasterizer splits them: SetCasterTriangles). Stage 2 renders the scene
+// where the map asks, as the CPU rasterizer splits them: SetCasterTriangles; a page as any map, by its
+// own matrix). Stage 2 renders the scene
 // through `shade` (normally a vtkRenderStepsPass) and reads each fragment's visibility as the one CPU
-// lookup does (lookup/shadow_reader.cpp), step by step: the setup's rule picks the map; the normal
+// lookup does (lookup/shadow_reader.cpp), step by step: the setup's rule picks the map (under
+// Rule::pages, the finest resident page from the page table and the pool's slots, two textures, its
+// matrix from its level's: render/glsl/page_table.glsl); the normal
 // offset moves the point; the depth bias (world lengths) moves it toward the light for its depth
 // alone, read exactly after the division by w whatever the map's perspective; then the filter: hard,
 // pcf, pcss (blocker search, penumbra, PCF) over the CPU's own tap lists, or vsm/evsm on the
@@ -46,15 +50,17 @@ public:
     static ShadowMapPass* New();
     vtkTypeMacro(ShadowMapPass, vtkOpenGLRenderPass);
 
-    static constexpr int kMaxMaps = 8;   // the shaders' uniform arrays hold this many maps
-    static constexpr int kMaxTaps = 81;  // and this many filter taps: kernel_size <= 9
+    static constexpr int kMaxMaps = 8;         // the shaders' uniform arrays hold this many maps (pages aside)
+    static constexpr int kMaxPageLevels = 24;  // and this many levels of a virtual map's page table
+    static constexpr int kMaxTaps = 81;        // and this many filter taps: kernel_size <= 9
 
     // What stage 2 writes: the surface shading (render/surface_shading.hpp), shadow tinted; white
     // where lit and black where shadowed; or the visibility itself as a grey level, unlit (for tests).
     enum class Output { shaded, lit_mask, visibility };
 
     // The maps, their tiles and the rule that picks one per point; resolution: texels per side of
-    // the whole texture. Throws std::invalid_argument for more than kMaxMaps maps.
+    // the whole texture. Throws std::invalid_argument for more than kMaxMaps maps, unless the rule is
+    // pages: then any number of linear maps, its table of at most kMaxPageLevels levels.
     void SetSetup(const ShadowSetup& setup, int resolution);
     // How fragments read the maps (the filter and the bias, as ShadowReader reads them) and how stage 1
     // stores them (lookup.format, as rasterize_depth stores them); the light and
@@ -97,6 +103,8 @@ private:
     void render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map);
     void render_shaded(const vtkRenderState* s);
     void split_casters_per_map();
+    void prepare_page_textures(vtkOpenGLRenderWindow* window);
+    bool paged() const { return setup_.selection.rule == MapSelection::Rule::pages; }
 
     Stage stage_ = Stage::shade;
     vtkTimeStamp stage_time_;
@@ -121,6 +129,10 @@ private:
     vtkSmartPointer<vtkOpenGLFramebufferObject> fbo_;
     vtkSmartPointer<vtkTextureObject> depth_, colour_;
     DepthEncoding allocated_encoding_ = DepthEncoding::float32;  // depth_'s internal format
+    // Rule::pages: the page table (GL_R32I, pages_per_side x levels * pages_per_side) and each map's
+    // slot (GL_RGBA32F, maps x 2), uploaded once per setup.
+    vtkSmartPointer<vtkTextureObject> page_table_, page_slots_;
+    bool page_textures_current_ = false;
 };
 
 }  // namespace shadowlab

@@ -49,10 +49,22 @@ void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOpt
     renderer->SetPass(pass);
 }
 
-// "cascade 1: view depth 0.5–12.3": each map in its palette colour, with the depths it serves.
+// "cascade 1: view depth 0.5–12.3": each map in its palette colour, with the depths it serves; a
+// virtual map's pages by level.
 void add_cascade_legend(vtkRenderer* renderer, const ShadowSetup& setup) {
     const MapSelection& s = setup.selection;
     std::vector<LegendEntry> entries;
+    if (s.rule == MapSelection::Rule::pages) {  // a virtual map's pages, coloured by their level (ShadowMapPass)
+        std::vector<int> pages_per_level(s.pages.levels.size());
+        for (const PageAddress& a : s.pages.pages) ++pages_per_level.at(a.level);
+        for (size_t level = 0; level < pages_per_level.size(); ++level)
+            if (pages_per_level[level] > 0)
+                entries.push_back(
+                    {glm::dvec3(kMapPalette[level % kMapPalette.size()]),
+                     "level " + std::to_string(level) + ": " + std::to_string(pages_per_level[level]) + " pages"});
+        add_legend(renderer, entries);
+        return;
+    }
     for (size_t i = 0; i < setup.maps.size(); ++i) {
         std::string text = map_name(setup, i);
         if (s.rule == MapSelection::Rule::view_depth && i + 1 < s.split_depths.size()) {

@@ -1,0 +1,217 @@
+// A virtual shadow map on the GPU (MapSelection::Rule::pages): far more pages than the pass's
+// uniform arrays hold, each drawn into its slot of the pool, and each fragment's page picked from
+// the page table in the fragment shader as resident_map picks it; the lit mask and each filter's
+// visibility against the CPU lookup (ShadowReader) on the same pixels.
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include <gtest/gtest.h>
+#include <vtkNew.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include "lookup/kernel_taps.hpp"
+#include "lookup/shadow_reader.hpp"
+#include "render/shadow_map_pass.hpp"
+#include "render/x_display.hpp"
+#include "view_test_support.hpp"
+#include "views/view.hpp"
+
+using namespace shadowlab;
+using namespace shadowlab::testing;
+
+namespace {
+
+constexpr int kWidth = 480, kHeight = 270;
+using SettingTexts = std::map<std::string, std::string>;
+
+// The levels that hold a resident page.
+std::set<int> levels_with_pages(const ShadowSetup& setup) {
+    std::set<int> levels;
+    for (const PageAddress& a : setup.selection.pages.pages) levels.insert(a.level);
+    return levels;
+}
+
+// The inspection's setup is a virtual map's: pages, more than the uniform arrays hold, over
+// several levels (so that the GPU's choice of level is tested, not one page's alone).
+void expect_many_pages(const Inspection& in) {
+    ASSERT_EQ(in.setup.selection.rule, MapSelection::Rule::pages);
+    EXPECT_GT(in.setup.maps.size(), static_cast<size_t>(ShadowMapPass::kMaxMaps));
+    EXPECT_GE(levels_with_pages(in.setup).size(), 2u);
+}
+
+// The Camera view drawn as render_view draws it, its pass switched to the visibility output.
+RgbImage gpu_visibility(const Inspection& in) {
+    const XDisplay x("the virtual pass test");
+    vtkNew<vtkRenderWindow> window;
+    window->SetInteractor(nullptr);
+    window->SetDisplayId(x.handle());
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    window->SetSize(kWidth, kHeight);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    build_view(renderer, in, view_or_throw("camera"),
+               ViewOptions{.lit_mask = true, .width = kWidth, .height = kHeight});
+    ShadowMapPass::SafeDownCast(renderer->GetPass())->SetOutput(ShadowMapPass::Output::visibility);
+    window->Render();
+    RgbImage image = grab(window);
+    window->Finalize();
+    return image;
+}
+
+// A pixel whose 3x3 neighbourhood sees one face of one object.
+bool inside_one_face(const ReferenceImage& ref, int x, int y) {
+    const size_t i = static_cast<size_t>(y) * ref.width + x;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const size_t j = i + dy * ref.width + dx;
+            if (!ref.visible[j] || ref.object[j] != ref.object[i] || ref.normal[j] != ref.normal[i]) return false;
+        }
+    return true;
+}
+
+struct Parity {
+    size_t compared = 0, penumbra = 0, shaded = 0;  // shaded: less than fully lit (the CPU's below 0.95)
+    double mean_difference = 0.0, penumbra_mean_difference = 0.0;
+};
+
+// |GPU − CPU| visibility per pixel inside one face, and over the CPU's penumbrae alone.
+Parity gpu_against_cpu_visibility(const Inspection& in) {
+    const ReferenceImage& ref = in.reference(kWidth, kHeight);
+    const RgbImage gpu = gpu_visibility(in);
+    const ShadowReader reader(in.setup, in.depth(), in.scene.light, in.lookup);
+    Parity parity;
+    double sum = 0.0, penumbra_sum = 0.0;
+    for (int y = 1; y < kHeight - 1; ++y)
+        for (int x = 1; x < kWidth - 1; ++x) {
+            if (!inside_one_face(ref, x, y)) continue;
+            const size_t i = static_cast<size_t>(y) * kWidth + x;
+            const double cpu = reader.visibility(
+                {.position = ref.position[i], .normal = ref.normal[i], .rotation = pixel_rotation(x, y)});
+            const double difference = std::abs(gpu.at(x, y)[0] / 255.0 - cpu);
+            const bool penumbra = cpu > 0.05 && cpu < 0.95;
+            sum += difference;
+            penumbra_sum += penumbra ? difference : 0.0;
+            ++parity.compared;
+            parity.penumbra += penumbra;
+            parity.shaded += cpu < 0.95;
+        }
+    parity.mean_difference = parity.compared ? sum / parity.compared : 0.0;
+    parity.penumbra_mean_difference = parity.penumbra ? penumbra_sum / parity.penumbra : 0.0;
+    return parity;
+}
+
+}  // namespace
+
+// The lit mask against the CPU's verdicts on the shipped scenes, under the default settings (16
+// levels, 128 pages per side: a table of 128 x 2048 texels) and a coarser pool of smaller pages.
+TEST(GpuAgreesWithCpuOnVirtualMaps, LitMaskOnShippedScenes) {
+    for (const std::string name : {"default", "box_on_plane"}) {  // sun-lit: a spot light takes one map
+        const Scene scene = shipped_scene(name, kWidth, kHeight);
+        for (const SettingTexts& settings :
+             {SettingTexts{}, SettingTexts{{"page_size", "64"}, {"virtual_resolution", "8192"}}}) {
+            const Inspection in = inspect_scene(scene, {.method = "virtual", .settings = settings, .resolution = 2048});
+            expect_many_pages(in);
+            const Agreement a = gpu_against_cpu_lookup(in, kWidth, kHeight);
+            ASSERT_EQ(a.undrawn, 0u);
+            ASSERT_GT(a.compared, kWidth * kHeight / 4u);
+            const std::string what = name + (settings.empty() ? "" : ", pages of 64");
+            EXPECT_GE(a.share(), 0.995) << what << ": " << a.compared - a.agreed << " of " << a.compared
+                                        << " pixels differ";
+            RecordProperty("virtual_agreement_" + name + (settings.empty() ? "" : "_64"), std::to_string(a.share()));
+            std::cout << "virtual on " << what << " (" << in.setup.maps.size() << " pages over "
+                      << levels_with_pages(in.setup).size() << " levels): GPU and CPU agree on " << a.agreed << " of "
+                      << a.compared << " pixels away from edges\n";
+        }
+    }
+}
+
+// Every depth format, reversed Z included: each page drawn with its reversed depth and read back
+// as the CPU reads it.
+TEST(GpuAgreesWithCpuOnVirtualMaps, LitMaskInEachDepthFormat) {
+    const Scene scene = shipped_scene("default", kWidth, kHeight);
+    const std::vector<DepthFormat> formats = depth_formats();
+    ASSERT_EQ(formats.size(), 6u);
+    for (const DepthFormat& format : formats) {
+        const Inspection in =
+            inspect_scene(scene, {.method = "virtual", .settings = depth_format_settings(format), .resolution = 2048});
+        ASSERT_EQ(in.depth().format, format);
+        expect_many_pages(in);
+        const Agreement a = gpu_against_cpu_lookup(in, kWidth, kHeight);
+        ASSERT_EQ(a.undrawn, 0u);
+        ASSERT_GT(a.compared, kWidth * kHeight / 4u);
+        EXPECT_GE(a.share(), 0.995) << describe(format) << ": " << a.compared - a.agreed << " of " << a.compared
+                                    << " pixels differ";
+        std::cout << "virtual on default, " << describe(format) << ": GPU and CPU agree on " << a.agreed << " of "
+                  << a.compared << " pixels away from edges\n";
+    }
+}
+
+// Each filter reads through the page the CPU reads, its taps kept in the page's tile: the
+// visibility per pixel against ShadowReader's, on the floating box (its shadow in view, a sun 2° wide
+// for PCSS).
+TEST(GpuAgreesWithCpuOnVirtualMaps, EachFilterReadsThePagesAsTheCpuLookup) {
+    Scene scene = floating_box(kWidth, kHeight);
+    scene.light.angular_radius_deg = 2.0;
+    const std::vector<std::pair<std::string, SettingTexts>> filters = {
+        {"hard", {{"filter", "hard"}}},
+        {"pcf box 3", {{"filter", "pcf"}, {"pcf_kernel", "box"}, {"kernel_size", "3"}, {"filter_radius", "2"}}},
+        {"pcf poisson 4", {{"filter", "pcf"}, {"pcf_kernel", "poisson"}, {"kernel_size", "4"}, {"filter_radius", "3"}}},
+        {"pcss", {{"filter", "pcss"}, {"kernel_size", "4"}}},
+        {"vsm", {{"filter", "vsm"}, {"kernel_size", "5"}}},
+        {"evsm", {{"filter", "evsm"}, {"kernel_size", "5"}}},
+        {"hard, receiver plane", {{"filter", "hard"}, {"bias_receiver_plane", "on"}}},
+    };
+    for (const auto& [name, settings] : filters) {
+        const Inspection in = inspect_scene(scene, {.method = "virtual", .settings = settings, .resolution = 2048});
+        expect_many_pages(in);
+        const Parity p = gpu_against_cpu_visibility(in);
+        ASSERT_GT(p.compared, kWidth * kHeight / 4u) << name;
+        EXPECT_GT(p.shaded, 500u) << name << ": the box's shadow is in view";
+        EXPECT_LT(p.mean_difference, 0.02) << name;
+        if (name.rfind("hard", 0) != 0) {
+            EXPECT_GT(p.penumbra, 100u) << name << ": the filter softens";
+            EXPECT_LT(p.penumbra_mean_difference, 0.03) << name << ", in the penumbrae";
+        }
+        std::cout << "virtual, " << name << ": mean |GPU - CPU| visibility " << p.mean_difference << " over "
+                  << p.compared << " pixels, " << p.penumbra_mean_difference << " over the " << p.penumbra
+                  << " in a penumbra (" << p.shaded << " not fully lit; " << in.setup.maps.size() << " pages)\n";
+    }
+}
+
+// What the pass refuses, each with one message: more levels than its uniforms hold, a table that does
+// not match the setup's maps; beyond pages, more maps than the arrays hold, as before.
+TEST(ShadowMapPassPages, RefusesWhatItCannotHold) {
+    vtkNew<ShadowMapPass> pass;
+    ShadowSetup setup;
+    setup.selection.rule = MapSelection::Rule::pages;
+    PageTable& table = setup.selection.pages;
+    table.pages_per_side = 2;
+    table.page_size = 8;
+    table.levels.resize(ShadowMapPass::kMaxPageLevels);
+    table.resident.assign(table.levels.size() * 4, -1);
+    for (int i = 0; i < 12; ++i) {  // 12 pages: more than kMaxMaps
+        table.resident[i] = i;
+        table.pages.push_back({.level = i / 4, .page = {i % 2, (i / 2) % 2}});
+        setup.maps.push_back({.viewport = glm::dvec4(i * 8, 0, i * 8 + 8, 8) / 128.0});
+    }
+    EXPECT_NO_THROW(pass->SetSetup(setup, 128));
+    ShadowSetup deeper = setup;
+    deeper.selection.pages.levels.emplace_back();
+    deeper.selection.pages.resident.resize(deeper.selection.pages.resident.size() + 4, -1);
+    EXPECT_THROW(pass->SetSetup(deeper, 128), std::invalid_argument);
+    ShadowSetup mismatched = setup;
+    mismatched.maps.pop_back();
+    EXPECT_THROW(pass->SetSetup(mismatched, 128), std::invalid_argument);
+    ShadowSetup paraboloid = setup;
+    paraboloid.maps[3].projection = Projection::paraboloid;
+    EXPECT_THROW(pass->SetSetup(paraboloid, 128), std::invalid_argument);
+    ShadowSetup tiles = setup;
+    tiles.selection.rule = MapSelection::Rule::tile_bounds;
+    EXPECT_THROW(pass->SetSetup(tiles, 128), std::invalid_argument);
+}
