@@ -225,10 +225,18 @@ std::string ordinal(int k) {
     return "every " + std::to_string(k) + suffix + " texel in u and v";
 }
 
+// A legend names each map up to this many; beyond (a virtual map's pages) the caption says what the
+// colours are: the palette's, map by map, repeating.
+constexpr size_t kMostNamedMaps = 16;
+
 std::string caption(const Inspection& in, size_t surface, size_t drawn, int stride, std::optional<double> density) {
     const size_t maps = in.setup.maps.size();
+    const std::string colours = maps > kMostNamedMaps
+                                    ? ", a colour each (the legend's " + std::to_string(kMapPalette.size()) +
+                                          " repeating, so that neighbouring maps differ)"
+                                    : ", a colour each";
     std::string text = "Texels — " + in.name() + ", " + std::to_string(in.resolution) + "² texture" +
-                       (maps > 1 ? " of " + std::to_string(maps) + " maps, a colour each, each where it serves" : "") +
+                       (maps > 1 ? " of " + std::to_string(maps) + " maps" + colours + ", each where it serves" : "") +
                        ": " + std::to_string(surface) + " texels land on a surface (receivers too); " +
                        ordinal(stride) + " drawn (" + std::to_string(drawn) + "), each as its footprint there\n";
     if (density) {
@@ -271,7 +279,7 @@ ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in, const 
     quads->GetProperty()->LightingOff();  // the map's colours exactly, whichever way a texel faces
     quads->GetProperty()->BackfaceCullingOff();
     renderer->AddActor(quads);
-    if (in.setup.maps.size() > 1) {
+    if (in.setup.maps.size() > 1 && in.setup.maps.size() <= kMostNamedMaps) {
         std::vector<LegendEntry> legend;
         for (size_t i = 0; i < in.setup.maps.size(); ++i)
             legend.push_back({map_colour(static_cast<int>(i)), map_name(in.setup, i)});
