@@ -232,8 +232,8 @@ constexpr size_t kMostNamedMaps = 16;
 std::string caption(const Inspection& in, size_t surface, size_t drawn, int stride, std::optional<double> density) {
     const size_t maps = in.setup.maps.size();
     const std::string colours = maps > kMostNamedMaps
-                                    ? ", a colour each (the legend's " + std::to_string(kMapPalette.size()) +
-                                          " repeating, so that neighbouring maps differ)"
+                                    ? ", a colour each (" + std::to_string(kMapPalette.size()) +
+                                          " colours in turn, so that neighbouring maps differ; too many to name)"
                                     : ", a colour each";
     std::string text = "Texels — " + in.name() + ", " + std::to_string(in.resolution) + "² texture" +
                        (maps > 1 ? " of " + std::to_string(maps) + " maps" + colours + ", each where it serves" : "") +
