@@ -219,3 +219,22 @@ TEST(Virtual, PagesDrawnFromTheirBinnedCastersEqualPagesDrawnFromEveryCaster) {
     EXPECT_TRUE(binned.codes == every.codes);
     EXPECT_LT(std::count(binned.codes.begin(), binned.codes.end(), binned.codes.back()), long(binned.codes.size()));
 }
+
+// A camera moved a little sideways keeps most of its pages (each the same level and square of its
+// grid), and the maps marked kept are exactly those the turnover counts.
+TEST(Virtual, AMovedCameraKeepsThePagesStillNeededAndSaysWhichTheyAre) {
+    const Scene scene = default_scene();
+    const ShadowInputs here = seen_inputs(scene, 2048);
+    Scene moved = scene;
+    moved.camera = camera_at(scene.camera, CameraPath{CameraPath::Kind::translate, 2, 0.0}, 1);
+    const ShadowInputs there = seen_inputs(moved, 2048);
+    const ShadowSetup before = run_virtual(here), now = run_virtual(there);
+    const std::vector<bool> kept = kept_maps(&before, now);
+    ASSERT_EQ(kept.size(), now.maps.size());
+    const PageTurnover turnover = page_turnover(&before, now);
+    EXPECT_EQ(std::size_t(std::count(kept.begin(), kept.end(), true)), turnover.kept);
+    EXPECT_GT(turnover.kept, 9 * turnover.allocated);
+    EXPECT_EQ(turnover.kept + turnover.freed, before.maps.size());
+    const std::vector<bool> first_frame = kept_maps(nullptr, now);
+    EXPECT_EQ(std::count(first_frame.begin(), first_frame.end(), true), 0);
+}

@@ -27,6 +27,18 @@ std::vector<GridKey> grid_keys(const ShadowSetup& setup) {
 
 }  // namespace
 
+std::vector<bool> kept_maps(const ShadowSetup* before, const ShadowSetup& now) {
+    std::vector<bool> kept(now.maps.size(), false);
+    if (!before || now.selection.rule != MapSelection::Rule::pages) return kept;
+    const std::vector<GridKey> then = grid_keys(*before);
+    const PageTable& table = now.selection.pages;
+    for (std::size_t map = 0; map < table.pages.size(); ++map) {
+        const glm::ivec2 g = grid_page(table, table.pages[map]);
+        kept[map] = std::binary_search(then.begin(), then.end(), GridKey{table.pages[map].level, g.x, g.y});
+    }
+    return kept;
+}
+
 PageTurnover page_turnover(const ShadowSetup* before, const ShadowSetup& now) {
     const std::vector<GridKey> then = before ? grid_keys(*before) : std::vector<GridKey>{}, here = grid_keys(now);
     std::vector<GridKey> both;

@@ -5,6 +5,7 @@
 // Over a static scene a kept page's texels are those it would be drawn with again, so a frame draws
 // only the pages it newly allocates. A setup without pages keeps nothing: it draws every tile.
 #include <cstddef>
+#include <vector>
 
 #include "maps/shadow_map.hpp"
 
@@ -15,6 +16,10 @@ struct PageTurnover {
     std::size_t kept = 0;       // resident in both: their texels kept
     std::size_t freed = 0;      // resident the frame before, not now
 };
+
+// Per map of `now`: whether `before` held the same page (false for every map of a setup without a
+// page table, or with no frame before).
+std::vector<bool> kept_maps(const ShadowSetup* before, const ShadowSetup& now);
 
 // From one frame's setup to the next's (`before` null for the first frame: every page allocated).
 PageTurnover page_turnover(const ShadowSetup* before, const ShadowSetup& now);

@@ -1,5 +1,7 @@
 #include "gui/background_inspection.hpp"
 
+#include "metrics/page_caching.hpp"
+
 #include <exception>
 #include <functional>
 #include <utility>
@@ -94,7 +96,9 @@ void BackgroundInspection::run(const InspectionJob& job, std::uint64_t number) {
     const int phases = 1 + static_cast<int>(prepared.size()) + (job.plot ? 1 : 0);
     try {
         enter_phase("computing " + job.request.method, 0, phases);
-        auto inspection = std::make_shared<const Inspection>(inspect_scene(job.scene, job.request));
+        Inspection computed = inspect_scene(job.scene, job.request);
+        computed.pages_kept = kept_maps(job.before ? &job.before->setup : nullptr, computed.setup);
+        auto inspection = std::make_shared<const Inspection>(std::move(computed));
         for (size_t i = 0; i < prepared.size(); ++i) {
             if (superseded(number)) return;
             enter_phase(prepared[i].first, 1 + static_cast<int>(i), phases);

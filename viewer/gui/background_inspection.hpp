@@ -37,6 +37,7 @@ struct InspectionJob {
     std::vector<ShownView> shown;
     std::optional<ShownView> diagnosis;
     std::optional<PlotRequest> plot;
+    std::shared_ptr<const Inspection> before;  // the inspection shown: what a virtual map's page cache keeps
 };
 
 // What the worker is doing: a phase's name and how many of the job's phases are done.

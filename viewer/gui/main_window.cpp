@@ -319,7 +319,11 @@ bool MainWindow::computing() const {
 void MainWindow::recompute() {
     if (session_.scene().objects.empty()) return;
     const AspectInForce aspect = aspect_in_force();
-    InspectionJob job{.scene = session_.scene(), .request = controls_->request(), .shown = {}, .plot = {}};
+    InspectionJob job{.scene = session_.scene(),
+                      .request = controls_->request(),
+                      .shown = {},
+                      .plot = {},
+                      .before = session_.shown()};
     job.scene.camera.aspect = aspect.aspect;
     for (ViewPanel* panel : panels_)
         job.shown.push_back({&panel->view(), panel->options_for(view_options(), aspect.aspect)});

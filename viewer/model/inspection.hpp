@@ -40,7 +40,10 @@ struct Inspection {
     WorldTriangles triangles;
     std::vector<bool> casters;  // per object
     ShadowSetup setup;          // maps: the method's result
-    ShadowLookup lookup;        // maps: the filter and bias the settings ask for (a constant `bias` replaces the bias)
+    // A virtual map's pages kept from the inspection shown before this one (the window's page cache:
+    // metrics/page_caching.hpp), per map of `setup`; empty when none was shown or none asked.
+    std::vector<bool> pages_kept;
+    ShadowLookup lookup;  // maps: the filter and bias the settings ask for (a constant `bias` replaces the bias)
     std::optional<GeometryResult> geometry;  // geometric techniques: the method's result
 
     bool has_map() const { return method->makes_maps(); }

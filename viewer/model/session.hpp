@@ -25,7 +25,8 @@ class Session {
 public:
     const Scene& scene() const { return scene_; }
     const std::optional<GltfSource>& gltf() const { return gltf_; }
-    const Inspection* inspection() const { return inspection_.get(); }  // the one the views show
+    const Inspection* inspection() const { return inspection_.get(); }       // the one the views show
+    std::shared_ptr<const Inspection> shown() const { return inspection_; }  // the same, shared
 
     // A scene JSON, a glTF scene or a mesh file, on trial; throws (naming the file and the field)
     // when it cannot be read, and the scene stays. Returns what loading assumed (loading_notes).
