@@ -78,7 +78,12 @@ void add_texels_legend(vtkRenderer* renderer) {
 
 void describe_overlay(vtkRenderer* renderer, const Inspection& in, MapOverlay overlay) {
     const ShadowSetup& setup = in.setup;
-    if (overlay == MapOverlay::cascade_index) {
+    if (overlay == MapOverlay::cascade_index && setup.selection.rule == MapSelection::Rule::pages) {
+        // Hundreds of pages: no legend of them; the Page table view shows each page's level and slot.
+        add_caption(renderer, "Camera — " + in.name() + ": the page serving each surface (" +
+                                  std::to_string(setup.maps.size()) +
+                                  " resident pages; their levels and slots: the Page table view)");
+    } else if (overlay == MapOverlay::cascade_index) {
         add_cascade_legend(renderer, setup);
         char band[80] = "";
         if (setup.selection.rule == MapSelection::Rule::view_depth && setup.selection.blend_band > 0.0)
