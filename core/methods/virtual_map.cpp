@@ -72,8 +72,6 @@ void add_notes(const PageMarks& marks, const PageAllocation& a, ShadowSetup& set
                              std::to_string(marks.outside) + " seen points beyond the coarsest level read lit"});
 }
 
-ShadowMap level_map(const Clipmap& c, int level) { return {.world_to_uvz = c.table.levels[level].world_to_uvz}; }
-
 // The levels that hold a marked page, finest first.
 std::vector<int> marked_levels(const PageMarks& marks, const Clipmap& c) {
     std::vector<int> levels;
@@ -150,8 +148,22 @@ void record_levels(const Clipmap& c, const std::vector<int>& levels, const Shado
                          .value("levels", double(c.levels()))
                          .value("finest texel", c.finest_texel)
                          .value("page width, level 0", c.page_width(0));
-        for (int level : levels)
-            step.shape("level " + std::to_string(level), map_volume(level_map(c, level)), Role::map);
+        // Each level as its square at the seen points' mean depth (the same d in every level): the
+        // clipmap's nested windows about the camera, rather than columns through the whole scene.
+        double depth = 0.5;
+        if (in.seen_receivers && !in.seen_receivers->points.empty() && !levels.empty()) {
+            double sum = 0.0;
+            for (const glm::dvec3& p : in.seen_receivers->points)
+                sum += (c.table.levels[levels.front()].world_to_uvz * glm::dvec4(p, 1.0)).z;
+            depth = sum / double(in.seen_receivers->points.size());
+        }
+        for (int level : levels) {
+            const glm::dmat4 world_from_level = glm::inverse(c.table.levels[level].world_to_uvz);
+            std::vector<glm::dvec4> square;
+            for (const auto& [u, v] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+                square.push_back(world_from_level * glm::dvec4(u, v, depth, 1.0));
+            step.shape("level " + std::to_string(level), PolygonSet{}.add(square), Role::map);
+        }
         draw_light(step, in.light, in.scene_bounds.center(), 0.25 * in.scene_bounds.diagonal());
         t.set_frame(Space::light, c.light_from_world);
     });
