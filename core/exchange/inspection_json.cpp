@@ -110,9 +110,10 @@ Json to_json(const ShadowMap& map) {
 Json pages_json(const PageTable& t) {
     std::vector<int> per_level(t.levels.size(), 0);
     for (const PageAddress& a : t.pages) ++per_level[a.level];
-    return {{"resident", t.pages.size()},          {"budget", t.counts.budget},       {"page_size", t.page_size},
-            {"levels", t.levels.size()},           {"resident_per_level", per_level}, {"marked", t.counts.marked},
-            {"over_budget", t.counts.over_budget}, {"dropped", t.counts.dropped}};
+    return {
+        {"resident", t.pages.size()},          {"budget", t.counts.budget},       {"page_size", t.page_size},
+        {"levels", t.levels.size()},           {"resident_per_level", per_level}, {"marked", t.counts.marked},
+        {"over_budget", t.counts.over_budget}, {"dropped", t.counts.dropped},     {"bias_added", t.counts.bias_added}};
 }
 
 Json to_json(const PageTable& t) {

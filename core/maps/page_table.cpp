@@ -31,6 +31,13 @@ glm::dmat4 page_world_to_uvz(const PageTable& table, const PageAddress& a) {
     return page_from_level * table.levels[a.level].world_to_uvz;
 }
 
+PageState page_state(const PageTable& table, const PageAddress& a) {
+    const std::size_t i = table.index(a);
+    const bool marked = i < table.marked.size() && table.marked[i] != 0, resident = table.resident[i] >= 0;
+    if (marked) return resident ? PageState::needed : PageState::over_budget;
+    return resident ? PageState::raised : PageState::empty;
+}
+
 glm::ivec2 grid_page(const PageTable& table, const PageAddress& a) { return table.levels[a.level].first_page + a.page; }
 
 }  // namespace shadowlab

@@ -5,6 +5,7 @@
 // the pages a view needs are resident; each resident page is one map of the setup, drawn into its
 // slot of the physical pool (the setup's texture), and a point reads the finest resident page that
 // holds it (MapSelection::Rule::pages, maps/map_lookup.hpp).
+#include <cstdint>
 #include <optional>
 #include <vector>
 #include <glm/glm.hpp>
@@ -28,9 +29,19 @@ struct PageAddress {
 };
 
 // What a view's allocation did: the pages it marked, the physical slots, the marked pages that fell
-// to a coarser level for want of a slot, and the coarsest ones left without one.
+// to a coarser level for want of a slot, the coarsest ones left without one, and the levels added
+// to the resolution bias to fit the budget.
 struct PageCounts {
     int marked = 0, budget = 0, over_budget = 0, dropped = 0;
+    double bias_added = 0.0;
+};
+
+// A page of the table as the view left it.
+enum class PageState {
+    empty,        // neither marked nor resident
+    needed,       // marked by the view (at the resolution bias set) and resident
+    raised,       // resident, not marked at the bias set: marked once the bias was raised to fit the budget
+    over_budget,  // marked at the bias set but given no slot: its points read a coarser resident page, or lit
 };
 
 struct PageTable {
@@ -41,6 +52,9 @@ struct PageTable {
     // the page is not resident.
     std::vector<int> resident;
     std::vector<PageAddress> pages;  // map i of the setup holds pages[i]
+    // As resident: 1 where the view marked the page at the resolution bias set (counts.marked of
+    // them), before any bias was added; empty when nothing was marked (a table built by hand).
+    std::vector<std::uint8_t> marked;
     PageCounts counts;
 
     int map_of(const PageAddress& a) const { return resident[index(a)]; }
@@ -48,6 +62,9 @@ struct PageTable {
         return (std::size_t(a.level) * pages_per_side + a.page.y) * pages_per_side + a.page.x;
     }
 };
+
+// The page's state: its mark (none when `marked` is empty) and whether a map holds it.
+PageState page_state(const PageTable& table, const PageAddress& page);
 
 // The page of `level` that holds the world point (its (u, v) in [0,1)², the far edge in the last
 // page), nullopt outside the level.

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "io/value_text.hpp"
 #include "maps/map_lookup.hpp"
@@ -46,7 +48,9 @@ void add_pages(const Clipmap& c, const PageAllocation& allocation, const Pool& p
     table.counts = {.marked = allocation.marked(),
                     .budget = allocation.budget,
                     .over_budget = allocation.over_budget,
-                    .dropped = allocation.dropped};
+                    .dropped = allocation.dropped,
+                    .bias_added = allocation.bias_added};
+    table.marked = allocation.marks.marked;  // at the bias set: the pages the view needs
     for (const PageAddress& a : allocation.resident) {
         const int map = static_cast<int>(setup.maps.size());
         table.resident[table.index(a)] = map;
@@ -69,8 +73,6 @@ void add_notes(const PageMarks& marks, const PageAllocation& a, ShadowSetup& set
                              std::to_string(marks.outside) + " seen points beyond the coarsest level read lit"});
 }
 
-ShadowMap level_map(const Clipmap& c, int level) { return {.world_to_uvz = c.table.levels[level].world_to_uvz}; }
-
 // The levels that hold a marked page, finest first.
 std::vector<int> marked_levels(const PageMarks& marks, const Clipmap& c) {
     std::vector<int> levels;
@@ -83,9 +85,59 @@ std::vector<int> marked_levels(const PageMarks& marks, const Clipmap& c) {
     return levels;
 }
 
-// A page's world volume: the level's map volume cut to the page.
-Frustum page_volume(const PageTable& table, const PageAddress& a) {
-    return map_volume(ShadowMap{.world_to_uvz = page_world_to_uvz(table, a)});
+// The light-space depth range (page d, from 0 at the light) of the seen points each page of the
+// table holds, in any level: where its receivers lie along its column. {1, 0} where it holds none.
+std::vector<glm::dvec2> seen_depths(const PageTable& table, const SeenReceivers& seen) {
+    std::vector<glm::dvec2> depths(table.resident.size(), glm::dvec2(1.0, 0.0));
+    for (const glm::dvec3& p : seen.points)
+        for (int level = 0; level < static_cast<int>(table.levels.size()); ++level)
+            if (const std::optional<PageAddress> a = page_holding(table, level, p)) {
+                const double d = (table.levels[level].world_to_uvz * glm::dvec4(p, 1.0)).z;
+                glm::dvec2& range = depths[table.index(*a)];
+                range = {std::min(range.x, d), std::max(range.y, d)};
+            }
+    return depths;
+}
+
+// Each page's box: its column cut to the depths of the seen points it holds (a sliver of the
+// receivers' depth at least, so that a flat receiver's page still reads as a box), as edges, one
+// set per level: hundreds of pages drawn as a few shapes, outlines that stay legible where they crowd.
+std::vector<std::pair<int, SegmentSet>> page_boxes(const PageTable& table, const std::vector<PageAddress>& pages,
+                                                   const std::vector<glm::dvec2>& depths) {
+    constexpr double kLeastDepth = 0.01;
+    std::vector<std::pair<int, SegmentSet>> out;
+    for (const PageAddress& a : pages) {
+        if (out.empty() || out.back().first != a.level) out.push_back({a.level, {}});
+        glm::dvec2 range = depths[table.index(a)];
+        if (range.x > range.y) range = {0.0, 1.0};  // no seen point: the whole column
+        const double middle = 0.5 * (range.x + range.y), half = std::max(0.5 * (range.y - range.x), kLeastDepth / 2);
+        range = {std::max(0.0, middle - half), std::min(1.0, middle + half)};
+        const glm::dmat4 world_from_page = glm::inverse(page_world_to_uvz(table, a));
+        auto corner = [&](int u, int v, int d) {
+            const glm::dvec4 w = world_from_page * glm::dvec4(u, v, d ? range.y : range.x, 1.0);
+            return glm::dvec3(w) / w.w;
+        };
+        auto& segments = out.back().second.segments;
+        for (int d = 0; d < 2; ++d) {  // the two squares, then the four edges between them
+            segments.push_back({corner(0, 0, d), corner(1, 0, d)});
+            segments.push_back({corner(1, 0, d), corner(1, 1, d)});
+            segments.push_back({corner(1, 1, d), corner(0, 1, d)});
+            segments.push_back({corner(0, 1, d), corner(0, 0, d)});
+        }
+        for (const auto& [u, v] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+            segments.push_back({corner(u, v, 0), corner(u, v, 1)});
+    }
+    return out;
+}
+
+// The pages marked in `marked` (as PageTable::resident), in slot order: level, then rows.
+std::vector<PageAddress> pages_marked(const PageTable& table, const std::vector<std::uint8_t>& marked) {
+    std::vector<PageAddress> pages;
+    for (int level = 0; level < static_cast<int>(table.levels.size()); ++level)
+        for (int y = 0; y < table.pages_per_side; ++y)
+            for (int x = 0; x < table.pages_per_side; ++x)
+                if (const PageAddress a{level, {x, y}}; marked[table.index(a)]) pages.push_back(a);
+    return pages;
 }
 
 void record_levels(const Clipmap& c, const std::vector<int>& levels, const ShadowInputs& in, Trace* trace) {
@@ -97,14 +149,29 @@ void record_levels(const Clipmap& c, const std::vector<int>& levels, const Shado
                          .value("levels", double(c.levels()))
                          .value("finest texel", c.finest_texel)
                          .value("page width, level 0", c.page_width(0));
-        for (int level : levels)
-            step.shape("level " + std::to_string(level), map_volume(level_map(c, level)), Role::map);
+        // Each level as its square at the seen points' mean depth (the same d in every level): the
+        // clipmap's nested windows about the camera, rather than columns through the whole scene.
+        double depth = 0.5;
+        if (in.seen_receivers && !in.seen_receivers->points.empty() && !levels.empty()) {
+            double sum = 0.0;
+            for (const glm::dvec3& p : in.seen_receivers->points)
+                sum += (c.table.levels[levels.front()].world_to_uvz * glm::dvec4(p, 1.0)).z;
+            depth = sum / double(in.seen_receivers->points.size());
+        }
+        for (int level : levels) {
+            const glm::dmat4 world_from_level = glm::inverse(c.table.levels[level].world_to_uvz);
+            std::vector<glm::dvec4> square;
+            for (const auto& [u, v] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+                square.push_back(world_from_level * glm::dvec4(u, v, depth, 1.0));
+            step.shape("level " + std::to_string(level), PolygonSet{}.add(square), Role::map);
+        }
         draw_light(step, in.light, in.scene_bounds.center(), 0.25 * in.scene_bounds.diagonal());
         t.set_frame(Space::light, c.light_from_world);
     });
 }
 
-void record_marking(const Clipmap& c, const PageMarks& marks, const SeenReceivers& seen, Trace* trace) {
+void record_marking(const Clipmap& c, const PageMarks& marks, const SeenReceivers& seen,
+                    const std::vector<glm::dvec2>& depths, Trace* trace) {
     record(trace, [&](Trace& t) {
         // At most kShown points: enough to see where the view looks, few enough to draw at once.
         constexpr std::size_t kShown = 4096;
@@ -112,21 +179,20 @@ void record_marking(const Clipmap& c, const PageMarks& marks, const SeenReceiver
         const std::size_t stride = std::max<std::size_t>(1, seen.points.size() / kShown);
         for (std::size_t i = 0; i < seen.points.size(); i += stride) shown.points.push_back(seen.points[i]);
         Step& step = t.add("virtual-marking", "Marking pages",
-                           "each seen receiver point marks its page in level floor(log2(footprint / texel0) + bias)",
+                           "each seen receiver point marks its page in level floor(log2(footprint / texel0) + bias); "
+                           "a page drawn as its column cut to the depths of its points",
                            Space::world)
                          .value("points", double(marks.points))
                          .value("outside", double(marks.outside))
                          .value("pages marked", double(marks.count()))
                          .shape("seen points", shown, Role::receivers);
-        for (int level = 0; level < c.levels(); ++level)
-            for (int y = 0; y < c.table.pages_per_side; ++y)
-                for (int x = 0; x < c.table.pages_per_side; ++x)
-                    if (const PageAddress a{level, {x, y}}; marks.marked[c.table.index(a)])
-                        step.shape("marked " + std::to_string(level), page_volume(c.table, a), Role::focus);
+        for (auto& [level, boxes] : page_boxes(c.table, pages_marked(c.table, marks.marked), depths))
+            step.shape("marked, level " + std::to_string(level), std::move(boxes), Role::focus);
     });
 }
 
-void record_allocation(const ShadowSetup& setup, const PageAllocation& a, Trace* trace) {
+void record_allocation(const PageTable& table, const PageAllocation& a, const std::vector<glm::dvec2>& depths,
+                       Trace* trace) {
     record(trace, [&](Trace& t) {
         Step& step =
             t.add("virtual-allocation", "Allocating slots",
@@ -137,29 +203,62 @@ void record_allocation(const ShadowSetup& setup, const PageAllocation& a, Trace*
                 .value("budget", double(a.budget))
                 .value("over budget", double(a.over_budget))
                 .value("dropped", double(a.dropped));
-        for (std::size_t i = 0; i < setup.maps.size(); ++i)
-            step.map_shape(int(i), "page", map_volume(setup.maps[i]), Role::map);
+        for (auto& [level, boxes] : page_boxes(table, table.pages, depths))
+            step.shape("resident, level " + std::to_string(level), std::move(boxes), Role::map);
+        std::vector<PageAddress> without;  // marked at the bias set, given no slot
+        for (const PageAddress& p : pages_marked(table, table.marked))
+            if (table.map_of(p) < 0) without.push_back(p);
+        for (auto& [level, boxes] : page_boxes(table, without, depths))
+            step.shape("over budget, level " + std::to_string(level), std::move(boxes), Role::receivers);
     });
 }
 
-// Step 4, rasterization: each resident page's casters drawn into its slot. Shown as the light-facing
-// squares of the pages (near faces), where the casters are seen from.
-void record_rasterization(const ShadowSetup& setup, int page_size, Trace* trace) {
+// Does the box's shadow column meet the map's (u, v) square? Its corners' (u, v) span against [0,1]².
+bool meets_page(const ShadowMap& map, const Aabb& box) {
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 corner{k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y,
+                                k & 4 ? box.max.z : box.min.z};
+        const glm::dvec4 uvz = map.world_to_uvz * glm::dvec4(corner, 1.0);  // orthographic: w = 1
+        lo = glm::min(lo, glm::dvec2(uvz)), hi = glm::max(hi, glm::dvec2(uvz));
+    }
+    return lo.x <= 1.0 && hi.x >= 0.0 && lo.y <= 1.0 && hi.y >= 0.0;
+}
+
+// Step 4, rasterization: each resident page's casters drawn into its slot: shown as the casters'
+// boxes that some resident page's column meets (those drawn at least once; UE5 culls the rest),
+// and, as the output, the seen points a resident page holds (what reads the table) and those none
+// holds (read lit).
+void record_rasterization(const ShadowSetup& setup, const ShadowInputs& in, int page_size, Trace* trace) {
     record(trace, [&](Trace& t) {
-        PolygonSet squares;
-        for (const ShadowMap& map : setup.maps) {
-            const Frustum volume = map_volume(map);
-            const auto& c = volume.corners;  // the near face first
-            squares.add({glm::dvec4(c[0], 1.0), glm::dvec4(c[1], 1.0), glm::dvec4(c[2], 1.0), glm::dvec4(c[3], 1.0)});
-        }
         const double texels = double(setup.maps.size()) * page_size * page_size;
-        t.add("virtual-rasterization", "Rasterizing pages",
-              "each resident page: its casters drawn into its slot of the pool, page_size² texels", Space::world)
-            .value("pages drawn", double(setup.maps.size()))
-            .value("texels drawn", texels)
-            .shape("drawn pages", squares, Role::casters);
-        t.add("output", "Page table", "a point reads the finest resident page that holds it", Space::world)
-            .value("pages", double(setup.maps.size()));
+        Step& step = t.add("virtual-rasterization", "Rasterizing pages",
+                           "each resident page: the casters its column meets drawn into its slot of the pool, "
+                           "page_size² texels",
+                           Space::world)
+                         .value("pages drawn", double(setup.maps.size()))
+                         .value("texels drawn", texels);
+        int drawn = 0;
+        for (const Aabb& box : in.casters)
+            if (std::any_of(setup.maps.begin(), setup.maps.end(),
+                            [&](const ShadowMap& map) { return meets_page(map, box); })) {
+                step.shape("caster drawn", box, Role::casters);
+                ++drawn;
+            }
+        step.value("casters drawn", double(drawn));
+        PointSet held, unheld;
+        if (in.seen_receivers) {
+            constexpr std::size_t kShown = 4096;  // as the marking step shows them
+            const std::vector<glm::dvec3>& points = in.seen_receivers->points;
+            const std::size_t stride = std::max<std::size_t>(1, points.size() / kShown);
+            for (std::size_t i = 0; i < points.size(); i += stride)
+                (resident_map(setup.selection.pages, points[i]) >= 0 ? held : unheld).points.push_back(points[i]);
+        }
+        Step& output =
+            t.add("output", "Page table", "a point reads the finest resident page that holds it", Space::world)
+                .value("pages", double(setup.maps.size()))
+                .shape("seen points a page holds", held, Role::step);
+        if (!unheld.points.empty()) output.shape("seen points no page holds (lit)", unheld, Role::light);
         if (!setup.maps.empty()) t.set_frame(Space::unit, setup.maps.front().world_to_uvz);
     });
 }
@@ -183,12 +282,13 @@ ShadowSetup compute_virtual(const ShadowInputs& in, const Settings& s, Trace* tr
     const PageAllocation allocation =
         allocate_pages(c, in.camera, *in.seen_receivers, s.number("resolution_bias"), pool.budget);
     const PageMarks& marks = allocation.marks;
+    const std::vector<glm::dvec2> depths = trace ? seen_depths(c.table, *in.seen_receivers) : std::vector<glm::dvec2>{};
     record_levels(c, marked_levels(marks, c), in, trace);
-    record_marking(c, marks, *in.seen_receivers, trace);
+    record_marking(c, marks, *in.seen_receivers, depths, trace);
     add_pages(c, allocation, pool, in.texture_resolution, setup);
     add_notes(marks, allocation, setup);
-    record_allocation(setup, allocation, trace);
-    record_rasterization(setup, c.table.page_size, trace);
+    record_allocation(setup.selection.pages, allocation, depths, trace);
+    record_rasterization(setup, in, c.table.page_size, trace);
     return setup;
 }
 

@@ -90,7 +90,13 @@ void add_texels_legend(vtkRenderer* renderer) {
 
 void describe_overlay(vtkRenderer* renderer, const Inspection& in, MapOverlay overlay) {
     const ShadowSetup& setup = in.setup;
-    if (overlay == MapOverlay::cascade_index) {
+    if (overlay == MapOverlay::cascade_index && setup.selection.rule == MapSelection::Rule::pages) {
+        // Hundreds of pages: coloured and listed by level; the Page table view shows each page and slot.
+        add_cascade_legend(renderer, setup);
+        add_caption(renderer, "Camera — " + in.name() + ": the level of the page serving each surface (" +
+                                  std::to_string(setup.maps.size()) +
+                                  " resident pages; each page and its slot: the Page table view)");
+    } else if (overlay == MapOverlay::cascade_index) {
         add_cascade_legend(renderer, setup);
         char band[80] = "";
         if (setup.selection.rule == MapSelection::Rule::view_depth && setup.selection.blend_band > 0.0)

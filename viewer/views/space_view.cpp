@@ -6,6 +6,7 @@
 // no light spaces: the World view shows its steps.
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include <vtkRenderer.h>
 
@@ -44,10 +45,16 @@ void draw_scene(SpaceCanvas& canvas, const Inspection& in, Space space, const Vi
     canvas.draw(scene, {.colour = glm::dvec3(1.0), .opacity = opaque ? 1.0 : 0.35}, "");
 }
 
-// Every linear map's volume (a cascade's maps side by side), labelled at its far corner.
+// Every linear map's volume (a cascade's maps side by side), labelled at its far corner. More maps
+// than the palette has colours (a virtual map's hundreds of pages) are drawn thin and dimmed, with
+// no labels, so that the steps' own shapes stay legible over them.
 void draw_map_volumes(SpaceCanvas& canvas, const ShadowSetup& setup, ViewReport& report) {
     const Placement placement = canvas.frame().placement_from(glm::dmat4(1.0));
     const RoleStyle& map = role_style(Role::map);
+    const bool many = setup.maps.size() > kMapPalette.size();
+    const Stroke stroke{.colour = many ? dimmed(map.colour) : map.colour, .width = many ? 1.0 : 2.0};
+    const std::string legend =
+        many ? std::string(map.legend) + ", " + std::to_string(setup.maps.size()) + " maps" : std::string(map.legend);
     for (const ShadowMap& m : setup.maps) {
         if (!projection_kind(m).projective()) {
             report.notes.push_back(std::string("a ") + projection_kind(m).name +
@@ -55,7 +62,8 @@ void draw_map_volumes(SpaceCanvas& canvas, const ShadowSetup& setup, ViewReport&
             continue;
         }
         const Frustum volume = map_volume(m);
-        canvas.draw(geometry_polydata(volume, placement), {.colour = map.colour, .width = 2.0}, map.legend);
+        canvas.draw(geometry_polydata(volume, placement), stroke, legend);
+        if (many) continue;
         if (const auto corner = placed_point(placement, volume.corners[6])) canvas.label(*corner, "[0,1]³", map.colour);
     }
 }
