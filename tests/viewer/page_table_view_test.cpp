@@ -11,6 +11,7 @@
 
 #include "render/x_display.hpp"
 #include "view_test_support.hpp"
+#include "metrics/page_caching.hpp"
 #include "views/page_table_view.hpp"
 
 using namespace shadowlab;
@@ -183,4 +184,37 @@ TEST(PageTableView, AnotherMethodDrawsNoPages) {
     for (int y = 0; y < kHeight - 40; ++y)
         for (int x = 0; x < kWidth; ++x) drawn += !has_colour(image.at(x, y), kPageBackground);
     EXPECT_EQ(drawn, 0u);
+}
+
+// After the camera moves a little, most resident pages are the ones the view before held: shown as
+// cached, each at its page's pixel, and counted in the caption; a page drawn anew stays white.
+TEST(PageTableView, PagesKeptFromTheViewBeforeShowAsCached) {
+    const Scene scene = shipped_scene("default", kWidth, kHeight);
+    const InspectionRequest request{.method = "virtual", .resolution = kResolution};
+    const Inspection before = inspect_scene(scene, request);
+    Scene moved = scene;
+    moved.camera.position.x += 0.5;
+    moved.camera.target.x += 0.5;
+    Inspection now = inspect_scene(moved, request);
+    now.pages_kept = kept_maps(&before.setup, now.setup);
+    const size_t kept = size_t(std::count(now.pages_kept.begin(), now.pages_kept.end(), true));
+    ASSERT_GT(kept, now.setup.maps.size() / 2);
+    ASSERT_LT(kept, now.setup.maps.size()) << "the move allocated no page: nothing would be drawn anew";
+    const PageTable& table = now.setup.selection.pages;
+    const PagePicture picture = page_picture(table, now.setup, kResolution, now.pages_kept);
+    size_t cached_shown = 0, anew_shown = 0;
+    for (const PageGridPanel& g : picture.grids) {
+        ASSERT_EQ(g.pages_per_pixel, 1);
+        for (size_t map = 0; map < table.pages.size(); ++map)
+            if (table.pages[map].level == g.level && shows(g, table.pages[map].page)) {
+                const glm::ivec2 p = page_pixel(g, table.pages[map].page);
+                const bool cached = has_colour(picture.image.at(p.x, p.y), kCachedPage);
+                EXPECT_EQ(cached, bool(now.pages_kept[map])) << "map " << map;
+                (cached ? cached_shown : anew_shown) += 1;
+            }
+    }
+    EXPECT_EQ(cached_shown, kept);
+    EXPECT_EQ(cached_shown + anew_shown, table.pages.size());
+    EXPECT_FALSE(text_with(texts_of(now), std::to_string(kept) + " of the resident pages kept").empty());
+    EXPECT_FALSE(text_with(texts_of(before), "no pages cached").empty());
 }

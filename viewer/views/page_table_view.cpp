@@ -21,6 +21,7 @@
 namespace shadowlab {
 
 const glm::dvec3 kPageBackground{0.10, 0.10, 0.12};
+const glm::dvec3 kCachedPage{0.40, 0.78, 0.52};
 
 // The states apart from the levels' hues: in use bright, held at the raised bias grey, wanting red.
 glm::dvec3 page_state_colour(PageState state) {
@@ -87,15 +88,22 @@ glm::dvec3 level_colour(size_t rank, size_t count) {
     return hue(0.85 * double(rank) / double(std::max<size_t>(1, count)));
 }
 
-// How a pixel covering several pages reads: the most telling state.
-int telling(PageState s) {
+// How a pixel covering several pages reads: the most telling state; a resident page kept from the
+// view before (cached) tells less than one drawn anew.
+constexpr int kCachedTelling = 2;
+int telling(PageState s, bool kept) {
     switch (s) {
-        case PageState::over_budget: return 3;
-        case PageState::needed: return 2;
-        case PageState::raised: return 1;
+        case PageState::over_budget: return 4;
+        case PageState::needed: return kept ? kCachedTelling : 3;
+        case PageState::raised: return kept ? kCachedTelling : 1;
         case PageState::empty: break;
     }
     return 0;
+}
+glm::dvec3 telling_colour(int telling) {
+    constexpr PageState kByTelling[5] = {PageState::empty, PageState::raised, PageState::needed, PageState::needed,
+                                         PageState::over_budget};
+    return telling == kCachedTelling ? kCachedPage : page_state_colour(kByTelling[telling]);
 }
 
 std::vector<int> shown_levels(const PageTable& table) {
@@ -143,7 +151,8 @@ std::pair<glm::ivec2, int> shown_square(const PageTable& table, const std::vecto
     return {first, side};
 }
 
-PagePicture page_picture(const PageTable& table, const ShadowSetup& setup, int texture_resolution) {
+PagePicture page_picture(const PageTable& table, const ShadowSetup& setup, int texture_resolution,
+                         const std::vector<bool>& kept) {
     constexpr int kGridPixels = 160;  // a grid's side at most, in pixels: about 1:1 in a 1280x720 view
     const std::vector<int> levels = shown_levels(table);
     const auto [first, w] = shown_square(table, levels);
@@ -180,18 +189,18 @@ PagePicture page_picture(const PageTable& table, const ShadowSetup& setup, int t
         std::vector<int> shown(std::size_t(cells) * cells, 0);  // the most telling state per cell
         for (int y = 0; y < w; ++y)
             for (int x = 0; x < w; ++x) {
-                const int s = telling(page_state(table, {g.level, first + glm::ivec2(x, y)}));
+                const PageAddress a{g.level, first + glm::ivec2(x, y)};
+                const int map = table.map_of(a);
+                const int s = telling(page_state(table, a), map >= 0 && std::size_t(map) < kept.size() && kept[map]);
                 int& at = shown[std::size_t(y / per_pixel) * cells + x / per_pixel];
                 at = std::max(at, s);
             }
-        constexpr PageState kByTelling[4] = {PageState::empty, PageState::raised, PageState::needed,
-                                             PageState::over_budget};
         const int cell_gap = cell >= 12 ? 2 : cell >= 4 ? 1 : 0;  // pages apart where they are large enough to tell
         fill(out.image, g.origin, {grid, grid}, kPageBackground);
         for (int cy = 0; cy < cells; ++cy)
             for (int cx = 0; cx < cells; ++cx)
                 fill(out.image, g.origin + glm::ivec2(cx, cells - 1 - cy) * cell, {cell - cell_gap, cell - cell_gap},
-                     page_state_colour(kByTelling[shown[std::size_t(cy) * cells + cx]]));
+                     telling_colour(shown[std::size_t(cy) * cells + cx]));
         frame(out.image, g.origin, grid, 2, g.colour);
         out.grids.push_back(g);
     }
@@ -240,7 +249,8 @@ ViewReport build_page_table_view(vtkRenderer* renderer, const Inspection& in, co
         return {};
     }
     const PageTable& table = in.setup.selection.pages;
-    const PagePicture picture = page_picture(table, in.setup, in.resolution);
+    const PagePicture picture = page_picture(table, in.setup, in.resolution, in.pages_kept);
+    const int cached = static_cast<int>(std::count(in.pages_kept.begin(), in.pages_kept.end(), true));
     show_image(renderer, picture.image);
 
     int states[4] = {0, 0, 0, 0};
@@ -255,7 +265,9 @@ ViewReport build_page_table_view(vtkRenderer* renderer, const Inspection& in, co
             }
     std::vector<LegendEntry> legend{
         {page_state_colour(PageState::needed),
-         "needed and resident: " + std::to_string(states[int(PageState::needed)])},
+         "needed and resident: " + std::to_string(states[int(PageState::needed)]) +
+             (in.pages_kept.empty() ? "" : " (drawn anew when not cached)")},
+        {kCachedPage, "resident, cached from the view before: " + std::to_string(cached)},
         {page_state_colour(PageState::raised),
          "resident, needed once the bias was raised: " + std::to_string(states[int(PageState::raised)])},
         {page_state_colour(PageState::over_budget),
@@ -296,7 +308,12 @@ ViewReport build_page_table_view(vtkRenderer* renderer, const Inspection& in, co
                      std::to_string(g.first_page.y + g.pages_shown - 1) + ", which hold every page in use";
         if (g.pages_per_pixel > 1) grids += ", " + std::to_string(g.pages_per_pixel) + "² pages a pixel";
     }
-    caption += grids + "; pool slots in their page's level's colour. One frame: no pages cached from a previous one.";
+    caption += grids + "; pool slots in their page's level's colour. " +
+               (in.pages_kept.empty() ? std::string("One frame: no pages cached from a previous one.")
+                                      : std::to_string(cached) +
+                                            " of the resident pages kept from the view before (a "
+                                            "page cache draws only the other " +
+                                            std::to_string(int(table.pages.size()) - cached) + ").");
     add_caption(renderer, caption);
     return {};
 }

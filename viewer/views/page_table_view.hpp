@@ -46,11 +46,15 @@ struct PagePicture {
 };
 
 // The picture of a setup whose selection is Rule::pages; the pool holds texture_resolution / page_size
-// slots per side.
-PagePicture page_picture(const PageTable& table, const ShadowSetup& setup, int texture_resolution);
+// slots per side. `kept`, per map (Inspection::pages_kept; empty: none): the resident pages a page
+// cache kept from the view before, shown as cached.
+PagePicture page_picture(const PageTable& table, const ShadowSetup& setup, int texture_resolution,
+                         const std::vector<bool>& kept = {});
 
-// The colours of the states and of the picture's background.
+// The colours of the states, of a resident page kept from the view before (cached), and of the
+// picture's background.
 glm::dvec3 page_state_colour(PageState state);
+extern const glm::dvec3 kCachedPage;
 extern const glm::dvec3 kPageBackground;
 // Whether the grid shows the page, and the pixel (x, y from the top) of the picture that does.
 bool shows(const PageGridPanel& grid, const glm::ivec2& page);
