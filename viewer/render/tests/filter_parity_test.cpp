@@ -8,16 +8,10 @@
 #include <string>
 #include <vector>
 #include <gtest/gtest.h>
-#include <vtkNew.h>
-#include <vtkRenderWindow.h>
-#include <vtkRenderer.h>
 
-#include "lookup/kernel_taps.hpp"
-#include "lookup/shadow_reader.hpp"
-#include "render/shadow_map_pass.hpp"
-#include "render/x_display.hpp"
 #include "view_test_support.hpp"
 #include "views/view.hpp"
+#include "visibility_parity.hpp"
 
 using namespace shadowlab;
 using namespace shadowlab::testing;
@@ -35,70 +29,6 @@ Scene box_under_area_sun() {
     scene.camera.position = {0.0, 5.0, 6.0};
     scene.camera.target = {0.0, 0.5, 0.0};
     return scene;
-}
-
-// The Camera view drawn as render_view draws it, its pass switched to the visibility output.
-RgbImage gpu_visibility(const Inspection& in) {
-    const XDisplay x("the filter parity test");
-    vtkNew<vtkRenderWindow> window;
-    window->SetInteractor(nullptr);
-    window->SetDisplayId(x.handle());
-    window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);
-    window->SetSize(kWidth, kHeight);
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
-    build_view(renderer, in, view_or_throw("camera"),
-               ViewOptions{.lit_mask = true, .width = kWidth, .height = kHeight});
-    ShadowMapPass::SafeDownCast(renderer->GetPass())->SetOutput(ShadowMapPass::Output::visibility);
-    window->Render();
-    RgbImage image = grab(window);
-    window->Finalize();
-    return image;
-}
-
-// A pixel whose 3x3 neighbourhood sees one face of one object: no object edge or box corner inside.
-bool inside_one_face(const ReferenceImage& ref, int x, int y) {
-    const size_t i = static_cast<size_t>(y) * ref.width + x;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            const size_t j = i + dy * ref.width + dx;
-            if (!ref.visible[j] || ref.object[j] != ref.object[i] || ref.normal[j] != ref.normal[i]) return false;
-        }
-    return true;
-}
-
-// |GPU − CPU| visibility over the pixels compared, and over those in a penumbra alone: most pixels
-// are fully lit or fully shadowed, so that a GPU filtering nothing would still differ little on average.
-struct Parity {
-    size_t compared = 0;
-    size_t penumbra = 0;  // pixels the CPU sees partly lit (visibility in (0.05, 0.95))
-    size_t shadowed = 0;  // pixels the CPU sees less than half lit
-    double mean_difference = 0.0, penumbra_mean_difference = 0.0;
-};
-
-Parity gpu_against_cpu_visibility(const Inspection& in, const ReferenceImage& ref) {
-    const RgbImage gpu = gpu_visibility(in);
-    const ShadowReader reader(in.setup, in.depth(), in.scene.light, in.lookup);
-    Parity parity;
-    double sum = 0.0, penumbra_sum = 0.0;
-    for (int y = 1; y < kHeight - 1; ++y)
-        for (int x = 1; x < kWidth - 1; ++x) {
-            if (!inside_one_face(ref, x, y)) continue;
-            const size_t i = static_cast<size_t>(y) * kWidth + x;
-            const double cpu = reader.visibility(
-                {.position = ref.position[i], .normal = ref.normal[i], .rotation = pixel_rotation(x, y)});
-            const double difference = std::abs(gpu.at(x, y)[0] / 255.0 - cpu);
-            const bool penumbra = cpu > 0.05 && cpu < 0.95;
-            sum += difference;
-            penumbra_sum += penumbra ? difference : 0.0;
-            ++parity.compared;
-            parity.penumbra += penumbra;
-            parity.shadowed += cpu < 0.5;
-        }
-    parity.mean_difference = parity.compared ? sum / parity.compared : 0.0;
-    parity.penumbra_mean_difference = parity.penumbra ? penumbra_sum / parity.penumbra : 0.0;
-    return parity;
 }
 
 struct SettingsCase {
@@ -131,7 +61,7 @@ void expect_each_filter_to_read_as_the_cpu(const Variants& variants) {
         for (const SettingsCase& variant : variants) {
             InspectionRequest request{.method = "focused", .settings = filter.settings, .resolution = 1024};
             request.settings.insert(variant.settings.begin(), variant.settings.end());
-            const Parity p = gpu_against_cpu_visibility(inspect_scene(scene, request), ref);
+            const VisibilityParity p = gpu_against_cpu_visibility(inspect_scene(scene, request), ref);
             const std::string name = filter.name + ", " + variant.name;
             ASSERT_GT(p.compared, kWidth * kHeight / 4u) << name;
             EXPECT_GT(p.shadowed, 1000u) << name << ": the box's shadow is in view";

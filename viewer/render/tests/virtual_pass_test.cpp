@@ -11,15 +11,11 @@
 #include <vector>
 #include <gtest/gtest.h>
 #include <vtkNew.h>
-#include <vtkRenderWindow.h>
-#include <vtkRenderer.h>
 
-#include "lookup/kernel_taps.hpp"
-#include "lookup/shadow_reader.hpp"
 #include "render/shadow_map_pass.hpp"
-#include "render/x_display.hpp"
 #include "view_test_support.hpp"
 #include "views/view.hpp"
+#include "visibility_parity.hpp"
 
 using namespace shadowlab;
 using namespace shadowlab::testing;
@@ -42,68 +38,6 @@ void expect_many_pages(const Inspection& in) {
     ASSERT_EQ(in.setup.selection.rule, MapSelection::Rule::pages);
     EXPECT_GT(in.setup.maps.size(), static_cast<size_t>(ShadowMapPass::kMaxMaps));
     EXPECT_GE(levels_with_pages(in.setup).size(), 2u);
-}
-
-// The Camera view drawn as render_view draws it, its pass switched to the visibility output.
-RgbImage gpu_visibility(const Inspection& in) {
-    const XDisplay x("the virtual pass test");
-    vtkNew<vtkRenderWindow> window;
-    window->SetInteractor(nullptr);
-    window->SetDisplayId(x.handle());
-    window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);
-    window->SetSize(kWidth, kHeight);
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
-    build_view(renderer, in, view_or_throw("camera"),
-               ViewOptions{.lit_mask = true, .width = kWidth, .height = kHeight});
-    ShadowMapPass::SafeDownCast(renderer->GetPass())->SetOutput(ShadowMapPass::Output::visibility);
-    window->Render();
-    RgbImage image = grab(window);
-    window->Finalize();
-    return image;
-}
-
-// A pixel whose 3x3 neighbourhood sees one face of one object.
-bool inside_one_face(const ReferenceImage& ref, int x, int y) {
-    const size_t i = static_cast<size_t>(y) * ref.width + x;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            const size_t j = i + dy * ref.width + dx;
-            if (!ref.visible[j] || ref.object[j] != ref.object[i] || ref.normal[j] != ref.normal[i]) return false;
-        }
-    return true;
-}
-
-struct Parity {
-    size_t compared = 0, penumbra = 0, shaded = 0;  // shaded: less than fully lit (the CPU's below 0.95)
-    double mean_difference = 0.0, penumbra_mean_difference = 0.0;
-};
-
-// |GPU − CPU| visibility per pixel inside one face, and over the CPU's penumbrae alone.
-Parity gpu_against_cpu_visibility(const Inspection& in) {
-    const ReferenceImage& ref = in.reference(kWidth, kHeight);
-    const RgbImage gpu = gpu_visibility(in);
-    const ShadowReader reader(in.setup, in.depth(), in.scene.light, in.lookup);
-    Parity parity;
-    double sum = 0.0, penumbra_sum = 0.0;
-    for (int y = 1; y < kHeight - 1; ++y)
-        for (int x = 1; x < kWidth - 1; ++x) {
-            if (!inside_one_face(ref, x, y)) continue;
-            const size_t i = static_cast<size_t>(y) * kWidth + x;
-            const double cpu = reader.visibility(
-                {.position = ref.position[i], .normal = ref.normal[i], .rotation = pixel_rotation(x, y)});
-            const double difference = std::abs(gpu.at(x, y)[0] / 255.0 - cpu);
-            const bool penumbra = cpu > 0.05 && cpu < 0.95;
-            sum += difference;
-            penumbra_sum += penumbra ? difference : 0.0;
-            ++parity.compared;
-            parity.penumbra += penumbra;
-            parity.shaded += cpu < 0.95;
-        }
-    parity.mean_difference = parity.compared ? sum / parity.compared : 0.0;
-    parity.penumbra_mean_difference = parity.penumbra ? penumbra_sum / parity.penumbra : 0.0;
-    return parity;
 }
 
 }  // namespace
@@ -170,7 +104,7 @@ TEST(GpuAgreesWithCpuOnVirtualMaps, EachFilterReadsThePagesAsTheCpuLookup) {
     for (const auto& [name, settings] : filters) {
         const Inspection in = inspect_scene(scene, {.method = "virtual", .settings = settings, .resolution = 2048});
         expect_many_pages(in);
-        const Parity p = gpu_against_cpu_visibility(in);
+        const VisibilityParity p = gpu_against_cpu_visibility(in, in.reference(kWidth, kHeight));
         ASSERT_GT(p.compared, kWidth * kHeight / 4u) << name;
         EXPECT_GT(p.shaded, 500u) << name << ": the box's shadow is in view";
         EXPECT_LT(p.mean_difference, 0.02) << name;
