@@ -167,10 +167,15 @@ void add_disc_rim(const Aabb& tile, std::vector<std::pair<glm::dvec3, glm::dvec3
     for (int k = 0; k < kSegments; ++k) edges.push_back({at(k), at(k + 1)});
 }
 
+// Tiles are labelled up to this many; beyond (a virtual map's pages, each a slot of the pool) the
+// labels would cover the texture, and the caption says where the names are.
+constexpr size_t kMostLabelledTiles = 16;
+
 // Each tile's border, its edges through the texel edges the viewport names, and a label inside its
 // top-left corner on two lines, so that it fits a small tile: the map's name ("cascade 2", "front",
 // "face +x"; map_name) over "1024²"; a paraboloid's disc drawn in its tile.
 void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
+    const bool labelled = setup.maps.size() <= kMostLabelledTiles;
     std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
     for (size_t i = 0; i < setup.maps.size(); ++i) {
         const Aabb tile = tile_in_pixels(setup.maps[i], n);
@@ -180,6 +185,7 @@ void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
             edges.push_back(edge);
         const bool disc = projection_kind(setup.maps[i]).fills_disc;
         if (disc) add_disc_rim(tile, edges);
+        if (!labelled) continue;
         const auto side = static_cast<int>(std::lround(tile_resolution(setup.maps[i], n)));
         const std::string text = map_name(setup, i) + "\n" + std::to_string(side) + "²";
         if (disc)  // in the corner the disc leaves empty, under the legend
@@ -464,7 +470,10 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
     if (const DepthFormat& format = in.depth().format; !(format == DepthFormat{}))
         title.append(" ").append(describe(format));  // (GCC 12 warns falsely of " " + a string here)
     add_caption(renderer, title + " — " + in.name() + words + maps + cross + " (" + (linear_maps ? frustum_words : "") +
-                              (in.setup.maps.size() > 1 ? "tile borders in green; " : "") +
+                              (in.setup.maps.size() > kMostLabelledTiles
+                                   ? "tile borders in green, too many to label: the Page table view names pages; "
+                               : in.setup.maps.size() > 1 ? "tile borders in green; "
+                                                          : "") +
                               "texel grid when zoomed in)" + sagittas);
     return report;
 }
