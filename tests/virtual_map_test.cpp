@@ -6,6 +6,7 @@
 
 #include "exchange/inspection_json.hpp"
 #include "maps/map_lookup.hpp"
+#include "lookup/shadow_reader.hpp"
 #include "methods/page_marking.hpp"
 #include "metrics/pixel_cause.hpp"
 #include "methods/virtual_map.hpp"
@@ -237,4 +238,54 @@ TEST(Virtual, AMovedCameraKeepsThePagesStillNeededAndSaysWhichTheyAre) {
     EXPECT_EQ(turnover.kept + turnover.freed, before.maps.size());
     const std::vector<bool> first_frame = kept_maps(nullptr, now);
     EXPECT_EQ(std::count(first_frame.begin(), first_frame.end(), true), 0);
+}
+
+// One level of 16 x 16 pages, every page resident in the slot where it lies in the level: the pool
+// is then the level's own map texel for texel, and a filter's kernel reads across page edges
+// (ShadowReader::tap_texel) as it reads across that one map's texels: the same visibility.
+TEST(Virtual, FilterKernelsReadAcrossPageEdgesAsAcrossOneMap) {
+    const Scene scene = load_scene(source_path("data/scenes/soft_shadows.json"));
+    const ShadowInputs in = gather_inputs(scene);
+    const Clipmap c = clipmap_around(in, {.levels = 1, .first_level_radius = 1.0, .virtual_resolution = 2048});
+    ShadowSetup pages{.selection = {.rule = MapSelection::Rule::pages, .pages = c.table}};
+    PageTable& table = pages.selection.pages;
+    const int n = table.pages_per_side;
+    ASSERT_EQ(n, 16);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const PageAddress a{.level = 0, .page = {x, y}};
+            table.resident[table.index(a)] = int(pages.maps.size());
+            table.pages.push_back(a);
+            pages.maps.push_back(
+                {.world_to_uvz = page_world_to_uvz(table, a), .viewport = glm::dvec4(x, y, x + 1, y + 1) / double(n)});
+        }
+    const ShadowSetup one{.maps = {ShadowMap{.world_to_uvz = table.levels[0].world_to_uvz}}};
+    const WorldTriangles triangles = tessellate(scene);
+    const std::vector<bool> casters = caster_flags(scene);
+    const DepthMap paged_depth = rasterize_depth(triangles, casters, pages, 2048);
+    const DepthMap one_depth = rasterize_depth(triangles, casters, one, 2048);
+    ASSERT_TRUE(paged_depth.codes == one_depth.codes) << "the pool is not the level's map";
+    const ReferenceImage seen = visible_points(scene, triangles, 320, 180);
+    for (const auto& settings : std::vector<std::map<std::string, std::string>>{
+             {{"filter", "pcf"}, {"pcf_kernel", "poisson"}, {"kernel_size", "4"}, {"filter_radius", "3"}},
+             {{"filter", "pcf"}, {"pcf_kernel", "box"}, {"kernel_size", "5"}, {"filter_radius", "2"}},
+             {{"filter", "pcss"}},
+             {{"filter", "pcf"}, {"kernel_size", "3"}, {"bias_receiver_plane", "on"}}}) {
+        const ShadowLookup lookup =
+            lookup_from(resolve_settings("focused", method_or_throw("focused").settings, settings));
+        const ShadowReader paged(pages, paged_depth, scene.light, lookup), whole(one, one_depth, scene.light, lookup);
+        std::size_t compared = 0, shaded = 0;
+        double worst = 0.0;
+        for (std::size_t i = 0; i < seen.visible.size(); ++i) {
+            if (!seen.visible[i] || !scene.objects[seen.object[i]].receives) continue;
+            const Receiver r{.position = seen.position[i], .normal = seen.normal[i], .rotation = double(i % 7)};
+            const double v = paged.visibility(r);
+            worst = std::max(worst, std::abs(v - whole.visibility(r)));
+            ++compared;
+            shaded += v < 1.0;
+        }
+        ASSERT_GT(compared, 10000u);
+        ASSERT_GT(shaded, 1000u) << "no shadow seen: nothing compared across page edges";
+        EXPECT_LT(worst, 1e-9) << settings.at("filter");
+    }
 }

@@ -31,8 +31,7 @@ double soft_shadow(const ShadowReader& reader, const MapReceiver& m, const Recei
     double blocker_depth = 0.0;
     int blockers = 0;
     for (const KernelTap& tap : taps) {
-        const glm::ivec2 texel =
-            texel_of(m.map, m.uv + rotated(tap.offset, c, s) * (search / m.texels), depth.resolution);
+        const glm::ivec2 texel = reader.tap_texel(m, m.uv + rotated(tap.offset, c, s) * (search / m.texels)).texel;
         const double stored = depth.at(texel.x, texel.y);
         if (stored < m.depth) blocker_depth += stored, ++blockers;
     }

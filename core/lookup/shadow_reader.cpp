@@ -74,6 +74,7 @@ std::optional<MapReceiver> ShadowReader::under(int which, const Receiver& r) con
         bias.slope_scale > 0.0 ? bias.slope_scale * slope_scaled_bias(texel_world, glm::dot(r.normal, -l)) : 0.0;
     return MapReceiver{
         .map = map,
+        .index = which,
         .position = p,
         .light_direction = l,
         .texels = texels,
@@ -101,7 +102,17 @@ std::optional<TexelRead> ShadowReader::read_texel(int which, const Receiver& r) 
                      .receiver = m->depth + glm::dot(m->plane_gradient, centre - m->uv)};
 }
 
-// The weighted share of taps the receiver passes: each reads its nearest texel (kept in the tile)
+TapTexel ShadowReader::tap_texel(const MapReceiver& m, const glm::dvec2& uv) const {
+    if (const std::optional<PageAcross> across = page_across(setup_.selection.pages, m.index, uv)) {
+        const ShadowMap& there = setup_.maps[across->map];
+        const glm::ivec2 texel = texel_of(there, across->uv, depth_.resolution);
+        return {texel, texel_centre_uv(there, texel, depth_.resolution) + glm::dvec2(across->offset)};
+    }
+    const glm::ivec2 texel = texel_of(m.map, uv, depth_.resolution);
+    return {texel, texel_centre_uv(m.map, texel, depth_.resolution)};
+}
+
+// The weighted share of taps the receiver passes: each reads its nearest texel (tap_texel)
 // and compares the receiver's depth there, on its plane when the receiver-plane bias is on.
 double ShadowReader::lit_share(const MapReceiver& m, const std::vector<KernelTap>& taps, double radius_texels,
                                double rotation, LookupCount* count) const {
@@ -109,10 +120,9 @@ double ShadowReader::lit_share(const MapReceiver& m, const std::vector<KernelTap
     double lit = 0.0;
     for (const KernelTap& tap : taps) {
         const glm::dvec2 uv = m.uv + rotated(tap.offset, c, s) * (radius_texels / m.texels);
-        const glm::ivec2 texel = texel_of(m.map, uv, depth_.resolution);
-        const double receiver =
-            m.depth + glm::dot(m.plane_gradient, texel_centre_uv(m.map, texel, depth_.resolution) - m.uv);
-        if (receiver <= depth_.at(texel.x, texel.y)) lit += tap.weight;
+        const TapTexel read = tap_texel(m, uv);
+        const double receiver = m.depth + glm::dot(m.plane_gradient, read.centre_uv - m.uv);
+        if (receiver <= depth_.at(read.texel.x, read.texel.y)) lit += tap.weight;
     }
     if (count) count->taps += taps.size();
     return std::min(lit, 1.0);  // the weights' rounding

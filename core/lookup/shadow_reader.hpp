@@ -40,6 +40,7 @@ inline glm::dvec2 rotated(const glm::dvec2& v, double c, double s) { return {c *
 // The receiver under one map, biased (ShadowReader::under): what a filter's visibility reads.
 struct MapReceiver {
     const ShadowMap& map;
+    int index;                   // the map's in the setup
     glm::dvec3 position;         // the point looked up: the receiver, moved by the normal offset
     glm::dvec3 light_direction;  // the way light travels there
     double texels;               // across the map's tile
@@ -57,6 +58,12 @@ struct TexelRead {
     glm::dvec2 texel_centre_uv;  // in the map's (u, v)
     double stored = 1.0;         // the texel's depth
     double receiver = 0.0;       // the receiver's biased depth at that texel
+};
+
+// The texel a filter's tap reads and its centre in the reading map's (u, v).
+struct TapTexel {
+    glm::ivec2 texel;
+    glm::dvec2 centre_uv;
 };
 
 class ShadowReader {
@@ -91,6 +98,12 @@ public:
     // The blurred moments (vsm, evsm), nullopt for the other filters; and the time the blur took.
     const std::optional<MomentMap>& moments() const { return moments_; }
     double prefilter_ms() const { return prefilter_ms_; }
+
+    // The texel a tap at (u, v) of the receiver's map reads: the nearest, kept in the map's tile,
+    // except for a virtual map's page whose tap falls beyond its square onto a resident page of its
+    // level (page_across): that page's texel, so that a kernel reads across page edges as across
+    // one map's texels. What hard, pcf and pcss read through.
+    TapTexel tap_texel(const MapReceiver& m, const glm::dvec2& uv) const;
 
     // The weighted share of `taps` the receiver passes, turned by `rotation` and spread over
     // radius_texels: what hard, pcf and pcss read through.

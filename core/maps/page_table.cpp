@@ -21,6 +21,19 @@ int resident_map(const PageTable& table, const glm::dvec3& world) {
     return -1;
 }
 
+std::optional<PageAcross> page_across(const PageTable& table, int map, const glm::dvec2& uv) {
+    if (map < 0 || std::size_t(map) >= table.pages.size()) return std::nullopt;
+    if (uv.x >= 0.0 && uv.x < 1.0 && uv.y >= 0.0 && uv.y < 1.0) return std::nullopt;  // its own square
+    const glm::ivec2 offset(int(std::floor(uv.x)), int(std::floor(uv.y)));
+    const PageAddress& own = table.pages[map];
+    const PageAddress there{.level = own.level, .page = own.page + offset};
+    const int n = table.pages_per_side;
+    if (there.page.x < 0 || there.page.y < 0 || there.page.x >= n || there.page.y >= n) return std::nullopt;
+    const int neighbour = table.map_of(there);
+    if (neighbour < 0) return std::nullopt;
+    return PageAcross{.map = neighbour, .uv = uv - glm::dvec2(offset), .offset = offset};
+}
+
 glm::dmat4 page_world_to_uvz(const PageTable& table, const PageAddress& a) {
     // u' = u n - x, v' = v n - y (n pages per side); d unchanged.
     const double n = table.pages_per_side;

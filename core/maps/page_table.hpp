@@ -73,6 +73,17 @@ std::optional<PageAddress> page_holding(const PageTable& table, int level, const
 // The finest resident page that holds the point, and the setup's map holding it; -1 for none.
 int resident_map(const PageTable& table, const glm::dvec3& world);
 
+// A (u, v) of the page map `map` holds, read beyond its square's edge (a filter's tap): the page
+// of the same level it falls in, resident, and the (u, v) there, its square `offset` whole pages
+// from the first. nullopt inside the square, beyond the level, where that page is not resident,
+// and for a map that is no page (a table without pages: every other setup).
+struct PageAcross {
+    int map = -1;
+    glm::dvec2 uv{0.0};
+    glm::ivec2 offset{0};
+};
+std::optional<PageAcross> page_across(const PageTable& table, int map, const glm::dvec2& uv);
+
 // The page's own (u, v, d): the level's map with its (u, v) square cut to the page's, so that the
 // page is a linear map of its own and every reader of maps reads it as one.
 glm::dmat4 page_world_to_uvz(const PageTable& table, const PageAddress& page);

@@ -153,11 +153,23 @@ std::string paged(std::string text, const std::vector<std::pair<std::string, std
     }
     return text;
 }
+// The filters' taps read through ShadowReader::tap_texel's page_across (shadowPageTapTexel,
+// page_table.glsl, declared ahead of the filters that call it).
 std::string paged_declarations(std::string text) {
-    return paged(std::move(text),
-                 {{"uniform mat4 shadowMapWorldToUvz[shadowMaxMaps];", "mat4 shadowMapWorldToUvz[shadowMaxMaps];"},
-                  {"uniform vec4 shadowMapViewport[shadowMaxMaps];", "vec4 shadowMapViewport[shadowMaxMaps];"},
-                  {"uniform vec4 shadowMapTileTexels[shadowMaxMaps];", "vec4 shadowMapTileTexels[shadowMaxMaps];"}});
+    return paged(
+        std::move(text),
+        {{"uniform mat4 shadowMapWorldToUvz[shadowMaxMaps];", "mat4 shadowMapWorldToUvz[shadowMaxMaps];"},
+         {"uniform vec4 shadowMapViewport[shadowMaxMaps];", "vec4 shadowMapViewport[shadowMaxMaps];"},
+         {"uniform vec4 shadowMapTileTexels[shadowMaxMaps];",
+          "vec4 shadowMapTileTexels[shadowMaxMaps];\nivec2 shadowPageTapTexel(vec2 uv, out vec2 centreUv);"},
+         {"ivec2 texel = shadowTexelOf(i, m.uv + shadowRotated(shadowTaps[k].xy, c, s) * (radiusTexels / m.texels));",
+          "vec2 centre;\n    ivec2 texel = shadowPageTapTexel(m.uv + shadowRotated(shadowTaps[k].xy, c, s) * "
+          "(radiusTexels / m.texels), centre);"},
+         {"float receiver = m.depth + dot(m.planeGradient, shadowTexelCentreUv(i, texel) - m.uv);",
+          "float receiver = m.depth + dot(m.planeGradient, centre - m.uv);"},
+         {"ivec2 texel = shadowTexelOf(i, m.uv + shadowRotated(shadowTaps[k].xy, c, s) * (search / m.texels));",
+          "vec2 centre;\n    ivec2 texel = shadowPageTapTexel(m.uv + shadowRotated(shadowTaps[k].xy, c, s) * "
+          "(search / m.texels), centre);"}});
 }
 std::string paged_lookup(std::string text) {
     return paged(std::move(text), {{"int i = shadowSelectMap(p);", "int i = shadowSelectPage(p);"}});

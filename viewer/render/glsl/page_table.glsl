@@ -42,8 +42,10 @@ mat4 shadowPageWorldToUvz(int level, ivec2 page) {
   pageFromLevel[3] = vec4(-vec2(page), 0.0, 1.0);
   return pageFromLevel * shadowPageLevelWorldToUvz[level];
 }
-// The selected page's level: the cascade overlay's colour under pages (kMapPalette[level % 8]).
+// The selected page's level (the cascade overlay's colour under pages: kMapPalette[level % 8]) and
+// its place in the level (where its filter's taps reach their neighbours).
 int shadowSelectedLevel = 0;
+ivec2 shadowSelectedPage = ivec2(0);
 // select_map under Rule::pages: the resident page holding p loaded as map 0; -1 for none (lit).
 int shadowSelectPage(vec3 p) {
   int level;
@@ -51,8 +53,31 @@ int shadowSelectPage(vec3 p) {
   int map = shadowResidentMap(p, level, page);
   if (map < 0) return -1;
   shadowSelectedLevel = level;
+  shadowSelectedPage = page;
   shadowMapWorldToUvz[0] = shadowPageWorldToUvz(level, page);
   shadowMapViewport[0] = texelFetch(shadowPageSlots, ivec2(map, 0), 0);
   shadowMapTileTexels[0] = texelFetch(shadowPageSlots, ivec2(map, 1), 0);
   return 0;
+}
+// ShadowReader::tap_texel under pages: a tap of the selected page (map 0) beyond its square reads
+// the resident page of its level there (page_across, maps/page_table.cpp), else map 0's texel kept
+// in its tile; the texel, and its centre in map 0's (u, v) (texel_centre_uv, plus the offset).
+ivec2 shadowPageTapTexel(vec2 uv, out vec2 centreUv) {
+  vec4 tile = shadowMapViewport[0], texels = shadowMapTileTexels[0];
+  ivec2 offset = ivec2(0);
+  bool inside = uv.x >= 0.0 && uv.x < 1.0 && uv.y >= 0.0 && uv.y < 1.0;
+  ivec2 there = shadowSelectedPage + ivec2(floor(uv));
+  if (!inside && all(greaterThanEqual(there, ivec2(0))) && all(lessThan(there, ivec2(shadowPagesPerSide)))) {
+    int map = texelFetch(shadowPageTable, ivec2(there.x, shadowSelectedLevel * shadowPagesPerSide + there.y), 0).r;
+    if (map >= 0) {
+      offset = ivec2(floor(uv));
+      tile = texelFetch(shadowPageSlots, ivec2(map, 0), 0);
+      texels = texelFetch(shadowPageSlots, ivec2(map, 1), 0);
+    }
+  }
+  vec2 local = uv - vec2(offset);
+  vec2 t = (tile.xy + local * (tile.zw - tile.xy)) * float(shadowResolution);
+  ivec2 texel = ivec2(clamp(floor(t), texels.xy, texels.zw));
+  centreUv = ((vec2(texel) + 0.5) / float(shadowResolution) - tile.xy) / (tile.zw - tile.xy) + vec2(offset);
+  return texel;
 }

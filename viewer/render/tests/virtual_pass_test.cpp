@@ -118,6 +118,28 @@ TEST(GpuAgreesWithCpuOnVirtualMaps, EachFilterReadsThePagesAsTheCpuLookup) {
     }
 }
 
+// Small pages under soft shadows: most penumbrae straddle page edges, where a filter's taps read the
+// neighbouring page (tap_texel on the CPU, shadowPageTapTexel on the GPU); GPU and CPU agree there.
+TEST(GpuAgreesWithCpuOnVirtualMaps, FilterTapsReadAcrossPageEdgesAsTheCpuDoes) {
+    const Scene scene = shipped_scene("soft_shadows", kWidth, kHeight);
+    const std::vector<std::pair<std::string, SettingTexts>> filters = {
+        {"pcf poisson 4", {{"filter", "pcf"}, {"pcf_kernel", "poisson"}, {"kernel_size", "4"}, {"filter_radius", "3"}}},
+        {"pcss", {{"filter", "pcss"}, {"kernel_size", "4"}}},
+    };
+    for (const auto& [name, settings] : filters) {
+        SettingTexts small_pages = settings;
+        small_pages["page_size"] = "32";
+        const Inspection in = inspect_scene(scene, {.method = "virtual", .settings = small_pages, .resolution = 2048});
+        expect_many_pages(in);
+        const VisibilityParity p = gpu_against_cpu_visibility(in, in.reference(kWidth, kHeight));
+        ASSERT_GT(p.penumbra, 2000u) << name << ": the soft shadows are in view";
+        EXPECT_LT(p.penumbra_mean_difference, 0.01) << name << ", in the penumbrae";
+        std::cout << "virtual, 32-texel pages, " << name << ": mean |GPU - CPU| visibility " << p.mean_difference
+                  << ", " << p.penumbra_mean_difference << " over the " << p.penumbra << " in a penumbra ("
+                  << in.setup.maps.size() << " pages)\n";
+    }
+}
+
 // What the pass refuses, each with one message: more levels than its uniforms hold, a table that does
 // not match the setup's maps; beyond pages, more maps than the arrays hold, as before.
 TEST(ShadowMapPassPages, RefusesWhatItCannotHold) {
