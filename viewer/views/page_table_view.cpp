@@ -21,7 +21,7 @@
 namespace shadowlab {
 
 const glm::dvec3 kPageBackground{0.10, 0.10, 0.12};
-const glm::dvec3 kCachedPage{0.40, 0.78, 0.52};
+const glm::dvec3 kCachedPage{0.78, 0.70, 0.52};  // khaki: apart from the levels' saturated hues
 
 // The states apart from the levels' hues: in use bright, held at the raised bias grey, wanting red.
 glm::dvec3 page_state_colour(PageState state) {
