@@ -103,7 +103,8 @@ std::optional<TexelRead> ShadowReader::read_texel(int which, const Receiver& r) 
 }
 
 TapTexel ShadowReader::tap_texel(const MapReceiver& m, const glm::dvec2& uv) const {
-    if (const std::optional<PageAcross> across = page_across(setup_.selection.pages, m.index, uv)) {
+    const PageTable& pages = setup_.selection.pages;  // empty but for a virtual map: one test per tap
+    if (const std::optional<PageAcross> across = pages.pages.empty() ? std::nullopt : page_across(pages, m.index, uv)) {
         const ShadowMap& there = setup_.maps[across->map];
         const glm::ivec2 texel = texel_of(there, across->uv, depth_.resolution);
         return {texel, texel_centre_uv(there, texel, depth_.resolution) + glm::dvec2(across->offset)};
