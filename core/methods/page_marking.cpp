@@ -37,19 +37,17 @@ PageMarks mark_pages(const Clipmap& c, const SeenReceivers& seen, const std::vec
     return marks;
 }
 
-namespace {
-
-// The marked pages in slot order: level, then rows.
-std::vector<PageAddress> marked_pages(const PageMarks& marks, const Clipmap& c) {
+std::vector<PageAddress> marked_pages(const PageTable& table, const std::vector<std::uint8_t>& marked) {
     std::vector<PageAddress> pages;
-    const int n = c.table.pages_per_side;
-    for (int level = 0; level < c.levels(); ++level)
+    const int n = table.pages_per_side;
+    for (int level = 0; level < static_cast<int>(table.levels.size()); ++level)
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x)
-                if (const PageAddress a{.level = level, .page = {x, y}}; marks.marked[c.table.index(a)])
-                    pages.push_back(a);
+                if (const PageAddress a{.level = level, .page = {x, y}}; marked[table.index(a)]) pages.push_back(a);
     return pages;
 }
+
+namespace {
 
 // The pages farthest from the camera (in light space) beyond the first `keep` of them, removed.
 void keep_nearest(std::vector<PageAddress>& pages, const Clipmap& c, int keep) {
@@ -84,7 +82,7 @@ PageAllocation allocate_pages(const Clipmap& c, const Camera& camera, const Seen
         fitted = marks_at(hi);
         out.bias_added = double(hi) / kStepsPerLevel;
     }
-    out.resident = marked_pages(fitted, c);
+    out.resident = marked_pages(c.table, fitted.marked);
     if (static_cast<int>(out.resident.size()) > budget) {
         out.dropped = static_cast<int>(out.resident.size()) - budget;
         keep_nearest(out.resident, c, budget);

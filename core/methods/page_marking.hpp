@@ -28,6 +28,9 @@ struct PageMarks {
 PageMarks mark_pages(const Clipmap& clipmap, const SeenReceivers& seen, const std::vector<double>& levels,
                      double resolution_bias);
 
+// The pages marked in `marked` (as PageTable::resident), in slot order: level, then rows.
+std::vector<PageAddress> marked_pages(const PageTable& table, const std::vector<std::uint8_t>& marked);
+
 struct PageAllocation {
     std::vector<PageAddress> resident;  // in slot order: level, then rows of pages
     PageMarks marks;                    // as the view asked, at the resolution bias set

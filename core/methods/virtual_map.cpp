@@ -130,18 +130,9 @@ std::vector<std::pair<int, SegmentSet>> page_boxes(const PageTable& table, const
     return out;
 }
 
-// The pages marked in `marked` (as PageTable::resident), in slot order: level, then rows.
-std::vector<PageAddress> pages_marked(const PageTable& table, const std::vector<std::uint8_t>& marked) {
-    std::vector<PageAddress> pages;
-    for (int level = 0; level < static_cast<int>(table.levels.size()); ++level)
-        for (int y = 0; y < table.pages_per_side; ++y)
-            for (int x = 0; x < table.pages_per_side; ++x)
-                if (const PageAddress a{level, {x, y}}; marked[table.index(a)]) pages.push_back(a);
-    return pages;
-}
-
-void record_levels(const Clipmap& c, const std::vector<int>& levels, const ShadowInputs& in, Trace* trace) {
+void record_levels(const Clipmap& c, const PageMarks& marks, const ShadowInputs& in, Trace* trace) {
     record(trace, [&](Trace& t) {
+        const std::vector<int> levels = marked_levels(marks, c);
         Step& step = t.add("virtual-levels", "Clipmap levels",
                            "level l: half-width r0 2^l about the camera, snapped to whole pages of its grid; "
                            "texel 2 r0 2^l / virtual resolution",
@@ -186,7 +177,7 @@ void record_marking(const Clipmap& c, const PageMarks& marks, const SeenReceiver
                          .value("outside", double(marks.outside))
                          .value("pages marked", double(marks.count()))
                          .shape("seen points", shown, Role::receivers);
-        for (auto& [level, boxes] : page_boxes(c.table, pages_marked(c.table, marks.marked), depths))
+        for (auto& [level, boxes] : page_boxes(c.table, marked_pages(c.table, marks.marked), depths))
             step.shape("marked, level " + std::to_string(level), std::move(boxes), Role::focus);
     });
 }
@@ -196,7 +187,8 @@ void record_allocation(const PageTable& table, const PageAllocation& a, const st
     record(trace, [&](Trace& t) {
         Step& step =
             t.add("virtual-allocation", "Allocating slots",
-                  "marked pages take slots up to the budget; beyond it the finest, farthest fall a level", Space::world)
+                  "marked pages take slots up to the budget; beyond it the resolution bias rises until they fit",
+                  Space::world)
                 .value("marked", double(a.marked()))
                 .value("bias added", a.bias_added)
                 .value("resident", double(a.resident.size()))
@@ -206,7 +198,7 @@ void record_allocation(const PageTable& table, const PageAllocation& a, const st
         for (auto& [level, boxes] : page_boxes(table, table.pages, depths))
             step.shape("resident, level " + std::to_string(level), std::move(boxes), Role::map);
         std::vector<PageAddress> without;  // marked at the bias set, given no slot
-        for (const PageAddress& p : pages_marked(table, table.marked))
+        for (const PageAddress& p : marked_pages(table, table.marked))
             if (table.map_of(p) < 0) without.push_back(p);
         for (auto& [level, boxes] : page_boxes(table, without, depths))
             step.shape("over budget, level " + std::to_string(level), std::move(boxes), Role::receivers);
@@ -216,9 +208,7 @@ void record_allocation(const PageTable& table, const PageAllocation& a, const st
 // Does the box's shadow column meet the map's (u, v) square? Its corners' (u, v) span against [0,1]².
 bool meets_page(const ShadowMap& map, const Aabb& box) {
     glm::dvec2 lo(1e300), hi(-1e300);
-    for (int k = 0; k < 8; ++k) {
-        const glm::dvec3 corner{k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y,
-                                k & 4 ? box.max.z : box.min.z};
+    for (const glm::dvec3& corner : box.corners()) {
         const glm::dvec4 uvz = map.world_to_uvz * glm::dvec4(corner, 1.0);  // orthographic: w = 1
         lo = glm::min(lo, glm::dvec2(uvz)), hi = glm::max(hi, glm::dvec2(uvz));
     }
@@ -283,7 +273,7 @@ ShadowSetup compute_virtual(const ShadowInputs& in, const Settings& s, Trace* tr
         allocate_pages(c, in.camera, *in.seen_receivers, s.number("resolution_bias"), pool.budget);
     const PageMarks& marks = allocation.marks;
     const std::vector<glm::dvec2> depths = trace ? seen_depths(c.table, *in.seen_receivers) : std::vector<glm::dvec2>{};
-    record_levels(c, marked_levels(marks, c), in, trace);
+    record_levels(c, marks, in, trace);
     record_marking(c, marks, *in.seen_receivers, depths, trace);
     add_pages(c, allocation, pool, in.texture_resolution, setup);
     add_notes(marks, allocation, setup);
