@@ -31,6 +31,9 @@ const std::vector<FilterFamily>& filter_families() {
         {"vsm", {{"filter", "vsm"}}, {3, 5}},
         {"vsm, bleeding reduced 0.3", {{"filter", "vsm"}, {"bleed_reduction", "0.3"}}, {3, 5}},
         {"evsm", {{"filter", "evsm"}}, {3, 5}},
+        {"msm", {{"filter", "msm"}}, {3, 5}},
+        {"msm, 16 bits", {{"filter", "msm"}, {"msm_quantization", "unorm16"}}, {3, 5}},
+        {"esm", {{"filter", "esm"}}, {3, 5}},
     };
     return families;
 }

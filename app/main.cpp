@@ -173,8 +173,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     render_cmd
         ->add_option("--texture", render.texture,
-                     "the Shadow map view: depth | mean | deviation (the blurred moments a vsm or evsm "
-                     "filter reads)")
+                     "the Shadow map view: depth | mean | deviation (the blurred moments a vsm, evsm, msm or "
+                     "esm filter reads)")
         ->capture_default_str();
     render_cmd->add_option("--light", render.light,
                            "the light's direction AZ,EL in degrees: azimuth about +y from +x toward +z, elevation "

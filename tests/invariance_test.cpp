@@ -62,6 +62,8 @@ std::vector<std::pair<std::string, std::map<std::string, std::string>>> lookup_v
             {"focused", {{"filter", "pcf"}, {"filter_world_radius", std::to_string(0.3 * scale)}}},
             {"focused", {{"filter", "vsm"}, {"bleed_reduction", "0.2"}}},
             {"focused", {{"filter", "evsm"}}},
+            {"focused", {{"filter", "msm"}, {"msm_quantization", "unorm16"}}},
+            {"focused", {{"filter", "esm"}}},
             {"focused", {{"filter", "pcss"}}},
             {"focused", {{"bias_slope", "0"}, {"bias_normal", "1"}, {"bias_receiver_plane", "on"}}}};
 }

@@ -113,6 +113,34 @@ inline Scene edge_under_a_sphere_light() {
     return scene;
 }
 
+// VSM's light bleeding case: an 8 x 8 ground under a low caster that shadows all of it, and a high
+// one (nearer the light) over x < 0, seen from between the ground and the low caster. A filter
+// region holding both casters has a wide variance with a mean between them, and Chebyshev's bound
+// lights the ground there although the low caster shadows it fully.
+inline Scene ground_under_a_low_and_a_high_caster() {
+    Scene scene;
+    scene.objects.push_back({.name = "ground", .shape = Shape::plane, .size = {8.0, 1.0, 8.0}, .casts = false});
+    scene.objects.push_back({.name = "low",
+                             .shape = Shape::plane,
+                             .position = {0.0, 0.5, 0.0},
+                             .size = {8.0, 1.0, 8.0},
+                             .receives = false});
+    scene.objects.push_back({.name = "high",
+                             .shape = Shape::plane,
+                             .position = {-2.0, 6.0, 0.0},
+                             .size = {4.0, 1.0, 8.0},
+                             .receives = false});
+    scene.light = {.direction = {0, -1, 0}, .angular_radius_deg = 0.5};
+    scene.camera = {.position = {0, 0.3, 0.001},
+                    .target = {0, 0, 0},
+                    .up = {0, 0, -1},
+                    .fov_y_deg = 90,
+                    .aspect = 1,
+                    .near = 0.05,
+                    .far = 2};
+    return scene;
+}
+
 // The hard lookup of point p with a constant bias (world units along the light) and no other:
 // visibility 0..1 (a blend band crossfades two maps). The light only orients the bias: straight
 // down by default.

@@ -33,11 +33,19 @@ SettingSpec depth_format_setting() {
 SettingSpec kernel_size_setting() {
     return {.name = "kernel_size",
             .description =
-                "N: pcf's N×N (or N² Poisson) taps, each of pcss's two passes N² taps, vsm/evsm's blur N "
+                "N: pcf's N×N (or N² Poisson) taps, each of pcss's two passes N² taps, the moment filters' blur N "
                 "texels wide",
             .default_value = "3",
             .min = 1,
             .max = kMaxKernelSide};
+}
+
+SettingSpec bleed_reduction_setting() {
+    return {.name = "bleed_reduction",
+            .description = "vsm, evsm, msm: light bleeding reduction, the lit share below this cut to 0 (linstep)",
+            .default_value = "0",
+            .min = 0,
+            .max = 0.99};
 }
 
 // The filter setting: every filter's name, the first the default.
@@ -132,6 +140,9 @@ ShadowLookup lookup_from(const Settings& s, double constant_bias) {
                                    .bleed_reduction = s.number("bleed_reduction"),
                                    .evsm_positive = s.number("evsm_positive"),
                                    .evsm_negative = s.number("evsm_negative"),
+                                   .msm_moment_bias = s.number("msm_moment_bias"),
+                                   .msm_quantized = s.choice("msm_quantization") == "unorm16",
+                                   .esm_exponent = s.number("esm_exponent"),
                                    .settings = s},
                         .bias = {.constant = s.number("bias_constant"),
                                  .slope_scale = s.number("bias_slope"),

@@ -32,6 +32,8 @@ std::vector<std::string> filters_reading(const std::string& setting);
 
 // The kernel's side N, which several filters read (their descriptors share this spec).
 SettingSpec kernel_size_setting();
+// Light bleeding reduction (lookup/chebyshev.hpp), which vsm, evsm and msm read.
+SettingSpec bleed_reduction_setting();
 
 // One of them with another default: a method whose maps read best with it declares it among its own
 // settings, and the registry then leaves the shared one out.

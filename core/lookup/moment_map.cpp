@@ -3,18 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lookup/chebyshev.hpp"
 #include "maps/map_lookup.hpp"
 
 namespace shadowlab {
 namespace {
-
-glm::dvec4 moments_of(double depth, Moments kind, const ShadowFilter& filter) {
-    if (kind == Moments::depth) return {depth, depth * depth, 0.0, 0.0};
-    const double positive = evsm_positive_warp(depth, filter.evsm_positive);
-    const double negative = evsm_negative_warp(depth, filter.evsm_negative);
-    return {positive, positive * positive, negative, negative * negative};
-}
 
 // One pass of the separable box blur over a tile's texels, along x (axis 0) or y (axis 1), edges
 // clamped to the tile. Each window summed afresh, in double: a running sum (or prefix sums) of
@@ -45,16 +37,17 @@ void blur_along(std::vector<glm::dvec4>& texels, int resolution, glm::ivec2 firs
 MomentMap blurred_moments(const DepthMap& depth, const ShadowSetup& setup, const ShadowFilter& filter) {
     const int n = depth.resolution;
     std::vector<glm::dvec4> texels(depth.codes.size());
-    const Moments kind = filter_of(filter).moments;
+    const MomentEncoding& encoding = filter_of(filter).moments;
     for (int y = 0; y < n; ++y)
-        for (int x = 0; x < n; ++x) texels[depth.index(x, y)] = moments_of(depth.at(x, y), kind, filter);
+        for (int x = 0; x < n; ++x) texels[depth.index(x, y)] = encoding.of_depth(depth.at(x, y), filter);
     for (const ShadowMap& map : setup.maps) {
         const glm::ivec2 first = texel_of(map, glm::dvec2(0.0), n), last = texel_of(map, glm::dvec2(1.0), n);
         blur_along(texels, n, first, last, 0, filter.kernel_size);
         blur_along(texels, n, first, last, 1, filter.kernel_size);
     }
     MomentMap out{n, std::vector<glm::vec4>(texels.size())};
-    for (std::size_t i = 0; i < texels.size(); ++i) out.moments[i] = glm::vec4(texels[i]);
+    for (std::size_t i = 0; i < texels.size(); ++i)
+        out.moments[i] = glm::vec4(encoding.stored ? encoding.stored(texels[i], filter) : texels[i]);
     return out;
 }
 

@@ -13,7 +13,7 @@ namespace {
 
 std::deque<FilterDescriptor>& filters() {
     static std::deque<FilterDescriptor> list{
-        hard_filter(), pcf_filter(), vsm_filter(), evsm_filter(), pcss_filter(),
+        hard_filter(), pcf_filter(), vsm_filter(), evsm_filter(), msm_filter(), esm_filter(), pcss_filter(),
     };
     return list;
 }
@@ -28,7 +28,7 @@ bool is_glsl_name(const std::string& name) {
 
 }  // namespace
 
-bool ShadowFilter::reads_moments() const { return filter_of(*this).moments != Moments::none; }
+bool ShadowFilter::reads_moments() const { return filter_of(*this).moments.of_depth != nullptr; }
 bool ShadowFilter::soft() const { return filter_of(*this).soft; }
 int ShadowFilter::taps() const { return filter_of(*this).texel_reads(*this); }
 
@@ -65,6 +65,8 @@ void add_filter(FilterDescriptor descriptor) {
     if (find_filter(name)) throw std::invalid_argument("filter '" + name + "' is registered already");
     if (!descriptor.taps || !descriptor.texel_reads || !descriptor.visibility)
         throw std::invalid_argument("filter '" + name + "': set taps, texel_reads and visibility");
+    if (descriptor.moments.of_depth && !descriptor.moments.depth_statistics)
+        throw std::invalid_argument("filter '" + name + "': moments need their depth_statistics");
     filters().push_back(std::move(descriptor));
 }
 

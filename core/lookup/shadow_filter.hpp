@@ -7,6 +7,7 @@
 #include <deque>
 #include <string>
 #include <vector>
+#include <glm/glm.hpp>
 
 #include "lookup/kernel_taps.hpp"
 #include "methods/settings.hpp"
@@ -26,9 +27,12 @@ struct ShadowFilter {
     double min_variance = 1e-6;         // vsm, evsm: the variance's floor, in squared depth units
     double bleed_reduction = 0.0;       // vsm, evsm: linstep's cut (chebyshev.hpp)
     double evsm_positive = 40.0, evsm_negative = 5.0;  // evsm: the exponents c⁺, c⁻ (<= evsm_exponent_limit())
-    Settings settings;  // the lookup settings as given (lookup_from): what a registered filter's own read
+    double msm_moment_bias = 3e-5;  // msm: α, the moments pulled toward (½, ½, ½, ½) (Peters and Klein 2015)
+    bool msm_quantized = false;     // msm: 16 bits per moment in the optimized basis (64 bits a texel)
+    double esm_exponent = 80.0;     // esm: c of e^(c d) (<= esm_exponent_limit())
+    Settings settings;              // the lookup settings as given (lookup_from): what a registered filter's own read
 
-    bool reads_moments() const;  // vsm, evsm: the prefiltered moments (lookup/moment_map.hpp)
+    bool reads_moments() const;  // vsm, evsm, msm, esm: the prefiltered moments (lookup/moment_map.hpp)
     bool soft() const;           // a visibility between 0 and 1 (every filter but hard)
     // Texel reads of one map lookup: 1 (hard), N² (pcf), 2 N² (pcss: search and filter), 4 (a
     // bilinear read of the prefiltered moments).
@@ -40,11 +44,20 @@ struct MapReceiver;
 struct Receiver;
 struct LookupCount;
 
-// What a prefiltered filter stores per texel (lookup/moment_map.hpp).
-enum class Moments {
-    none,         // the depth texture itself
-    depth,        // vsm: (d, d², 0, 0)
-    exponential,  // evsm: (e⁺, (e⁺)², e⁻, (e⁻)²)
+// What a prefiltered filter stores per texel (lookup/moment_map.hpp): the moments of the texel's
+// depth, which the reader blurs over the kernel and reads bilinearly, and how they read back as a
+// depth in the Shadow map view. A filter without them reads the depth texture itself.
+struct MomentEncoding {
+    // The moments of one depth d in [0, 1]: vsm (d, d², 0, 0); null: the filter reads no moments.
+    glm::dvec4 (*of_depth)(double depth, const ShadowFilter& filter) = nullptr;
+    // What a texel keeps of its blurred moments (msm's 16-bit variant rounds each to 1/65535); null:
+    // the blurred moments as a float32 texture holds them.
+    glm::dvec4 (*stored)(const glm::dvec4& blurred, const ShadowFilter& filter) = nullptr;
+    // The mean depth the stored moments say, and their standard deviation in depth units (NaN where
+    // the moments hold none: esm).
+    glm::dvec2 (*depth_statistics)(const glm::dvec4& stored, const ShadowFilter& filter) = nullptr;
+    std::string mean_words;       // how the view names the mean: "the mean m₁ of the depth"
+    std::string deviation_words;  // and the deviation: "√(m₂ − m₁²)"; empty for none
 };
 
 struct FilterDescriptor {
@@ -57,7 +70,7 @@ struct FilterDescriptor {
     std::vector<KernelTap> (*taps)(const ShadowFilter& filter) = nullptr;
     int (*texel_reads)(const ShadowFilter& filter) = nullptr;  // per map lookup (ShadowFilter::taps)
     bool (*turns_taps)(const ShadowFilter& filter) = nullptr;  // its taps turn per pixel (pixel_rotation); null: never
-    Moments moments = Moments::none;                           // what the reader prefilters for it
+    MomentEncoding moments;                                    // what the reader prefilters for it, if anything
     bool soft = true;                                          // false: 0 or 1 only (hard)
     // The CPU visibility of one map lookup, the receiver already under the map (ShadowReader::under).
     double (*visibility)(const ShadowReader& reader, const MapReceiver& m, const Receiver& r,

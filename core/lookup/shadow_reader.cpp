@@ -39,7 +39,7 @@ ShadowReader::ShadowReader(const ShadowSetup& setup, const DepthMap& depth, cons
       filter_(&filter_of(lookup.filter)),
       taps_(filter_->taps(lookup.filter)) {
     const ShadowFilter& f = lookup.filter;
-    if (filter_->moments != Moments::none) {
+    if (filter_->moments.of_depth) {
         const Stopwatch watch;
         moments_ = blurred_moments(depth, setup, f);
         prefilter_ms_ = watch.ms();

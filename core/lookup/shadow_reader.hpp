@@ -95,7 +95,7 @@ public:
     const ShadowLookup& lookup() const { return lookup_; }
     const Light& light() const { return light_; }
     const std::vector<KernelTap>& taps() const { return taps_; }  // filter_taps, read once
-    // The blurred moments (vsm, evsm), nullopt for the other filters; and the time the blur took.
+    // The blurred moments (vsm, evsm, msm, esm), nullopt for the other filters; and the time the blur took.
     const std::optional<MomentMap>& moments() const { return moments_; }
     double prefilter_ms() const { return prefilter_ms_; }
 

@@ -9,5 +9,7 @@ FilterDescriptor pcf_filter();   // lookup/pcf_filter.cpp
 FilterDescriptor pcss_filter();  // lookup/pcss_filter.cpp
 FilterDescriptor vsm_filter();   // lookup/variance_filters.cpp
 FilterDescriptor evsm_filter();  // lookup/variance_filters.cpp
+FilterDescriptor msm_filter();   // lookup/msm_filter.cpp
+FilterDescriptor esm_filter();   // lookup/esm_filter.cpp
 
 }  // namespace shadowlab

@@ -3,18 +3,27 @@
 // (lookup/moment_map.hpp) at the receiver's depth.
 #include "lookup/chebyshev.hpp"
 #include "lookup/lookup_settings.hpp"
-#include "lookup/shadow_reader.hpp"
+#include "lookup/moment_read.hpp"
 #include "lookup/shipped_filters.hpp"
 
 namespace shadowlab {
 namespace {
 
-std::vector<KernelTap> no_taps(const ShadowFilter&) { return {}; }
-int bilinear_reads(const ShadowFilter&) { return 4; }
+// VSM's moments: the depth and its square.
+glm::dvec4 depth_moments(double depth, const ShadowFilter&) { return {depth, depth * depth, 0.0, 0.0}; }
+glm::dvec2 depth_statistics(const glm::dvec4& m, const ShadowFilter&) { return mean_and_deviation(m.x, m.y); }
 
-glm::dvec4 moments_at(const ShadowReader& reader, const MapReceiver& m, LookupCount* count) {
-    if (count) count->taps += 4;
-    return sample_moments(*reader.moments(), m.map, m.uv);
+// EVSM's: each warp and its square.
+glm::dvec4 exponential_moments(double depth, const ShadowFilter& filter) {
+    const double positive = evsm_positive_warp(depth, filter.evsm_positive);
+    const double negative = evsm_negative_warp(depth, filter.evsm_negative);
+    return {positive, positive * positive, negative, negative * negative};
+}
+// The positive warp's mean μ = E[e^{c⁺d}] carried back to depth, ln(μ) / c⁺, and its deviation to
+// first order, σ / (c⁺ μ) (d(e^{c⁺d}) = c⁺ e^{c⁺d} dd).
+glm::dvec2 exponential_statistics(const glm::dvec4& m, const ShadowFilter& filter) {
+    const double sigma = mean_and_deviation(m.x, m.y).y;
+    return {std::log(m.x) / filter.evsm_positive, sigma / (filter.evsm_positive * m.x)};
 }
 
 double variance_bound(const ShadowReader& reader, const MapReceiver& m, const Receiver&, LookupCount* count) {
@@ -46,11 +55,7 @@ std::vector<SettingSpec> variance_settings() {
              .default_value = "1e-6",
              .min = 0,
              .max = 0.01},
-            {.name = "bleed_reduction",
-             .description = "vsm, evsm: light bleeding reduction, Chebyshev's bound below this cut to 0 (linstep)",
-             .default_value = "0",
-             .min = 0,
-             .max = 0.99}};
+            bleed_reduction_setting()};
 }
 
 }  // namespace
@@ -61,7 +66,10 @@ FilterDescriptor vsm_filter() {
             .settings = variance_settings(),
             .taps = no_taps,
             .texel_reads = bilinear_reads,
-            .moments = Moments::depth,
+            .moments = {.of_depth = depth_moments,
+                        .depth_statistics = depth_statistics,
+                        .mean_words = "the mean m₁ of the depth",
+                        .deviation_words = "√(m₂ − m₁²)"},
             .visibility = variance_bound};
 }
 
@@ -84,7 +92,10 @@ FilterDescriptor evsm_filter() {
             .settings = std::move(settings),
             .taps = no_taps,
             .texel_reads = bilinear_reads,
-            .moments = Moments::exponential,
+            .moments = {.of_depth = exponential_moments,
+                        .depth_statistics = exponential_statistics,
+                        .mean_words = "the mean m₁ of e^(c⁺d), as a depth ln(m₁)/c⁺",
+                        .deviation_words = "σ/(c⁺ m₁)"},
             .visibility = exponential_variance_bound};
 }
 

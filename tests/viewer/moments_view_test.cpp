@@ -4,6 +4,7 @@
 // a 256² map at two screen pixels per texel), against the depth map the view was drawn from.
 #include <gtest/gtest.h>
 
+#include "lookup/shadow_filter.hpp"
 #include "view_test_support.hpp"
 
 namespace shadowlab {
@@ -26,27 +27,37 @@ float depth_span(const DepthMap& depth, int x, int y) {
     return hi - lo;
 }
 
+// For every filter whose moments hold a spread (vsm, evsm, msm).
 TEST(MomentsView, TheDeviationIsBrightOnlyWhereTheBlurMixesDepths) {
-    const Inspection in = inspect_scene(
-        testing::floating_box(kWidth, kHeight),
-        {.method = "focused", .settings = {{"filter", "vsm"}, {"kernel_size", "3"}}, .resolution = kResolution});
-    ViewOptions options;
-    options.texture = TextureShown::moment_deviation;
-    const RgbImage image = render_view(in, view_or_throw("shadowmap"), options, kWidth, kHeight);
-    size_t flat = 0, flat_dark = 0, edges = 0, edges_bright = 0;
-    for (int row = kFirstRow; row < kLastRow; ++row)
-        for (int x = 0; x < kResolution; ++x) {
-            const int y = kResolution - 1 - row;  // texel rows count up (v); the picture's from the top
-            const unsigned char* c = image.at(kImageLeft + kPixelsPerTexel * x, kPixelsPerTexel * row);
-            if (int(c[2]) > int(c[0]) + 60) continue;  // the camera frustum, drawn in blue over the texels
-            const float span = depth_span(in.depth(), x, y);
-            const int brightest = std::max({c[0], c[1], c[2]});
-            if (span < 0.005f) ++flat, flat_dark += brightest < 25;
-            if (span > 0.1f) ++edges, edges_bright += brightest > 100;
-        }
-    ASSERT_GT(edges, 40u) << "the box's outline should lie in the compared rows";
-    EXPECT_GT(double(flat_dark) / flat, 0.99) << flat_dark << " of " << flat << " texels of one depth";
-    EXPECT_GT(double(edges_bright) / edges, 0.9) << edges_bright << " of " << edges << " texels across an edge";
+    int filters = 0;
+    for (const FilterDescriptor& filter : all_filters()) {
+        if (filter.moments.deviation_words.empty()) continue;
+        ++filters;
+        const Inspection in = inspect_scene(testing::floating_box(kWidth, kHeight),
+                                            {.method = "focused",
+                                             .settings = {{"filter", filter.name}, {"kernel_size", "3"}},
+                                             .resolution = kResolution});
+        ViewOptions options;
+        options.texture = TextureShown::moment_deviation;
+        const RgbImage image = render_view(in, view_or_throw("shadowmap"), options, kWidth, kHeight);
+        size_t flat = 0, flat_dark = 0, edges = 0, edges_bright = 0;
+        for (int row = kFirstRow; row < kLastRow; ++row)
+            for (int x = 0; x < kResolution; ++x) {
+                const int y = kResolution - 1 - row;  // texel rows count up (v); the picture's from the top
+                const unsigned char* c = image.at(kImageLeft + kPixelsPerTexel * x, kPixelsPerTexel * row);
+                if (int(c[2]) > int(c[0]) + 60) continue;  // the camera frustum, drawn in blue over the texels
+                const float span = depth_span(in.depth(), x, y);
+                const int brightest = std::max({c[0], c[1], c[2]});
+                if (span < 0.005f) ++flat, flat_dark += brightest < 25;
+                if (span > 0.1f) ++edges, edges_bright += brightest > 100;
+            }
+        ASSERT_GT(edges, 40u) << filter.name << ": the box's outline should lie in the compared rows";
+        EXPECT_GT(double(flat_dark) / flat, 0.99)
+            << filter.name << ": " << flat_dark << " of " << flat << " texels of one depth";
+        EXPECT_GT(double(edges_bright) / edges, 0.9)
+            << filter.name << ": " << edges_bright << " of " << edges << " texels across an edge";
+    }
+    EXPECT_GE(filters, 3) << "vsm, evsm and msm at least";
 }
 
 // Under a filter that reads no moments, the option draws the depth, as the default does.

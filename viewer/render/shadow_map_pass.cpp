@@ -269,21 +269,30 @@ bool turns_taps(const ShadowFilter& f) {
     return filter.turns_taps && filter.turns_taps(f);
 }
 
+// A line of a dispatch by the filter whose index is shadowFilterKind: "if it is f, return <call>".
+std::string filter_case(const FilterDescriptor& f, const std::string& call) {
+    return "  if (shadowFilterKind == " + std::to_string(filter_index(f)) + ") return " + call + ";\n";
+}
+
 // Every filter's GLSL (a shipped filter's file, render/glsl/<name>_filter.glsl, or a registered
-// one's own text), then map_visibility, one map's share of the light at the receiver (off the map,
-// lit), by the filter whose index is shadowFilterKind.
+// one's own text), then, by the filter whose index is shadowFilterKind: map_visibility, one map's
+// share of the light at the receiver (off the map, lit), and the moment encoding moment_map.glsl
+// declares (the moments of a depth, what a texel stores of their blur).
 std::string filters_glsl() {
-    std::string functions, dispatch;
+    std::string functions, visibility, moments_of, stored;
     for (const FilterDescriptor& f : all_filters()) {
         functions += f.glsl.empty() ? std::string(glsl_source(f.name + "_filter")) : f.glsl;
-        dispatch += "  if (shadowFilterKind == " + std::to_string(filter_index(f)) + ") return shadowFilter_" + f.name +
-                    "(i, m, rotation);\n";
+        visibility += filter_case(f, "shadowFilter_" + f.name + "(i, m, rotation)");
+        if (f.moments.of_depth) moments_of += filter_case(f, "shadowMomentsOf_" + f.name + "(depth)");
+        if (f.moments.stored) stored += filter_case(f, "shadowStoredMoments_" + f.name + "(blurred)");
     }
     return functions +
            "float shadowMapVisibility(int i, vec3 position, vec3 normal, float rotation) {\n"
            "  ShadowMapReceiver m;\n"
            "  if (!shadowUnder(i, position, normal, m)) return 1.0;\n" +
-           dispatch + "  return 1.0;\n}\n";
+           visibility + "  return 1.0;\n}\n" + "vec4 shadowMomentsOf(float depth) {\n" + moments_of +
+           "  return vec4(0.0);\n}\n" + "vec4 shadowStoredMoments(vec4 blurred) {\n" + stored +
+           "  return blurred;\n}\n";
 }
 
 // The taps the filter reads around the lookup (filter_taps, the CPU's own list and order), as the
@@ -306,21 +315,22 @@ bool set_filter_uniforms(ProgramUniforms& program, const ShadowLookup& lookup, c
     const auto real = [&program](const char* name, double value) {
         return program.SetUniformf(name, static_cast<float>(value));
     };
-    return all_set(program.SetUniformi("shadowTapCount", tap_count),
-                   program.SetUniform3fv("shadowTaps", ShadowMapPass::kMaxTaps, glm::value_ptr(taps[0])),
-                   program.SetUniformi("shadowTapsTurn", turns_taps(f)),
-                   real("shadowFilterRadiusTexels", f.radius_texels), real("shadowFilterRadiusWorld", f.radius_world),
-                   program.SetUniformi("shadowFilterKernelSize", f.kernel_size),
-                   real("shadowMinVariance", f.min_variance), real("shadowBleedReduction", f.bleed_reduction),
-                   real("shadowEvsmPositive", f.evsm_positive), real("shadowEvsmNegative", f.evsm_negative),
-                   real("shadowBiasConstant", b.constant), real("shadowBiasSlopeScale", b.slope_scale),
-                   real("shadowBiasNormalOffset", b.normal_offset),
-                   program.SetUniformi("shadowLightDirectional", light.is_directional()),
-                   program.SetUniform3f("shadowLightPosition", glm::value_ptr(light.position)),
-                   real("shadowLightRadius", light.radius),
-                   real("shadowLightTanAngularRadius", std::tan(glm::radians(light.angular_radius_deg))),
-                   program.SetUniform2i("shadowImageOrigin", glm::value_ptr(image_origin)),
-                   program.SetUniformi("shadowImageHeight", image_height));
+    return all_set(
+        program.SetUniformi("shadowTapCount", tap_count),
+        program.SetUniform3fv("shadowTaps", ShadowMapPass::kMaxTaps, glm::value_ptr(taps[0])),
+        program.SetUniformi("shadowTapsTurn", turns_taps(f)), real("shadowFilterRadiusTexels", f.radius_texels),
+        real("shadowFilterRadiusWorld", f.radius_world), program.SetUniformi("shadowFilterKernelSize", f.kernel_size),
+        real("shadowMinVariance", f.min_variance), real("shadowBleedReduction", f.bleed_reduction),
+        real("shadowEvsmPositive", f.evsm_positive), real("shadowEvsmNegative", f.evsm_negative),
+        real("shadowMsmMomentBias", f.msm_moment_bias), program.SetUniformi("shadowMsmQuantized", f.msm_quantized),
+        real("shadowEsmExponent", f.esm_exponent), real("shadowBiasConstant", b.constant),
+        real("shadowBiasSlopeScale", b.slope_scale), real("shadowBiasNormalOffset", b.normal_offset),
+        program.SetUniformi("shadowLightDirectional", light.is_directional()),
+        program.SetUniform3f("shadowLightPosition", glm::value_ptr(light.position)),
+        real("shadowLightRadius", light.radius),
+        real("shadowLightTanAngularRadius", std::tan(glm::radians(light.angular_radius_deg))),
+        program.SetUniform2i("shadowImageOrigin", glm::value_ptr(image_origin)),
+        program.SetUniformi("shadowImageHeight", image_height));
 }
 
 // The files of render/glsl named, one after the other.

@@ -8,6 +8,7 @@
 // Chebyshev's bound lets light bleed).
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -96,21 +97,16 @@ float largest_value(const TexelValues& texture) {
     return largest;
 }
 
-// Per texel of the stored texture, the blurred moments' mean or standard deviation in depth units.
-// VSM's moments are the depth's own; EVSM's positive warp μ = E[e^{c⁺d}] is carried back to depth,
-// its mean as ln(μ) / c⁺ and its deviation to first order, σ / (c⁺ μ) (d(e^{c⁺d}) = c⁺ e^{c⁺d} dd).
+// Per texel of the stored texture, the blurred moments' mean or standard deviation in depth units, as
+// the filter's moment encoding reads them back (MomentEncoding::depth_statistics).
 TexelValues moment_texture(const Inspection& in, TextureShown shown) {
     const ShadowFilter& filter = in.lookup.filter;
+    const MomentEncoding& encoding = filter_of(filter).moments;
     const MomentMap moments = blurred_moments(in.depth(), in.setup, filter);
-    const bool exponential = filter_of(filter).moments == Moments::exponential;
     TexelValues texture{.resolution = moments.resolution, .values = std::vector<float>(moments.moments.size())};
     for (size_t i = 0; i < moments.moments.size(); ++i) {
-        const double mean = moments.moments[i].x, second = moments.moments[i].y;
-        const double sigma = std::sqrt(std::max(0.0, second - mean * mean));  // √(m₂ − m₁²)
-        if (shown == TextureShown::moment_mean)
-            texture.values[i] = float(exponential ? std::log(mean) / filter.evsm_positive : mean);
-        else
-            texture.values[i] = float(exponential ? sigma / (filter.evsm_positive * mean) : sigma);
+        const glm::dvec2 statistics = encoding.depth_statistics(glm::dvec4(moments.moments[i]), filter);
+        texture.values[i] = float(shown == TextureShown::moment_mean ? statistics.x : statistics.y);
     }
     return texture;
 }
@@ -379,10 +375,13 @@ PaintedTexture painted_depth(const Inspection& in, std::string caption) {
     return {std::move(shown), std::move(image), std::move(caption)};
 }
 
-// The moments the filter reads, with their colour bar (the deviation) and the caption's words.
+// The moments the filter reads, with their colour bar (the deviation) and the caption's words (the
+// filter's MomentEncoding: "VSM's mean m₁ of the depth over a 3×3 box").
 PaintedTexture painted_moments(vtkRenderer* renderer, const Inspection& in, TextureShown which) {
     const ShadowFilter& filter = in.lookup.filter;
-    const bool exponential = filter_of(filter).moments == Moments::exponential;
+    const MomentEncoding& encoding = filter_of(filter).moments;
+    std::string name = filter.kind;
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::toupper(c); });
     const std::string blur =
         " over a " + std::to_string(filter.kernel_size) + "×" + std::to_string(filter.kernel_size) + " box";
     const float empty = which == TextureShown::moment_mean ? 1.0f : std::numeric_limits<float>::quiet_NaN();
@@ -390,11 +389,12 @@ PaintedTexture painted_moments(vtkRenderer* renderer, const Inspection& in, Text
     if (which == TextureShown::moment_mean) {
         RgbImage image = depth_to_grey(shown.texture);
         return {std::move(shown), std::move(image),
-                (exponential ? "EVSM's mean m₁ of e^(c⁺d)" + blur + ", as a depth ln(m₁)/c⁺"
-                             : "VSM's mean m₁ of the depth" + blur) +
-                    " (near dark, far light)"};
+                name + "'s " + encoding.mean_words + blur + " (near dark, far light)"};
     }
-    const std::string deviation = exponential ? "σ/(c⁺ m₁)" : "√(m₂ − m₁²)";
+    if (encoding.deviation_words.empty()) {  // one moment: no spread to show
+        RgbImage image = depth_to_grey(shown.texture);
+        return {std::move(shown), std::move(image), name + "'s moments hold no deviation (one moment)"};
+    }
     const float largest = largest_value(shown.texture);
     char middle[32], top[32];
     std::snprintf(middle, sizeof middle, "%.2g", largest / 2);
@@ -405,12 +405,10 @@ PaintedTexture painted_moments(vtkRenderer* renderer, const Inspection& in, Text
                               .high_side = "depths differ:\nlight may bleed",
                               .title = any_bends_edges(in.setup)  // its legend takes the title's row
                                            ? ""
-                                           : "standard deviation " + deviation + ", in depth units"});
+                                           : "standard deviation " + encoding.deviation_words + ", in depth units"});
     RgbImage image = deviation_to_heat(shown.texture, largest);
     return {std::move(shown), std::move(image),
-            (exponential ? "EVSM's standard deviation of e^(c⁺d)" + blur + ", as a depth " + deviation
-                         : "VSM's standard deviation " + deviation + " of the depth" + blur),
-            true};
+            name + "'s standard deviation " + encoding.deviation_words + " of the depth" + blur, true};
 }
 
 PaintedTexture painted_texture(vtkRenderer* renderer, const Inspection& in, TextureShown which) {

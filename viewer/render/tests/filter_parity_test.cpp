@@ -2,6 +2,7 @@
 // bias, and each depth format (issue 26), the pass's visibility per pixel
 // (ShadowMapPass::Output::visibility, a grey level) against ShadowReader::visibility of the same
 // receiver: the visible point, its normal, the Poisson disk's turn at that pixel.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "view_test_support.hpp"
+#include "lookup/shadow_filter.hpp"
 #include "views/view.hpp"
 #include "visibility_parity.hpp"
 
@@ -43,6 +45,11 @@ const SettingsCase kFilters[] = {
     {"pcf poisson 4", {{"filter", "pcf"}, {"pcf_kernel", "poisson"}, {"kernel_size", "4"}, {"filter_radius", "3"}}},
     {"vsm", {{"filter", "vsm"}, {"kernel_size", "5"}}},
     {"evsm", {{"filter", "evsm"}, {"kernel_size", "5"}}},
+    {"msm", {{"filter", "msm"}, {"kernel_size", "5"}}},
+    {"msm 16 bits", {{"filter", "msm"}, {"kernel_size", "5"}, {"msm_quantization", "unorm16"}}},
+    // ESM at its default c = 80 lights a receiver wherever the blur holds one empty texel (its e^{c}
+    // at the far plane, the ground casting nothing here): a ramp under a pixel wide. c = 10 widens it.
+    {"esm", {{"filter", "esm"}, {"kernel_size", "5"}, {"esm_exponent", "10"}}},
     {"pcss", {{"filter", "pcss"}, {"kernel_size", "4"}}},
 };
 
@@ -78,6 +85,14 @@ void expect_each_filter_to_read_as_the_cpu(const Variants& variants) {
 }
 
 }  // namespace
+
+// The cases hold every shipped filter: a filter added to the list is added here too.
+TEST(GpuFilterParity, TheCasesHoldEveryFilter) {
+    for (const FilterDescriptor& f : all_filters())
+        EXPECT_TRUE(std::any_of(std::begin(kFilters), std::end(kFilters), [&](const SettingsCase& c) {
+            return c.settings.at("filter") == f.name;
+        })) << f.name;
+}
 
 TEST(GpuFilterParity, EachFilterAndBiasReadsAsTheCpuLookup) { expect_each_filter_to_read_as_the_cpu(kBiases); }
 
