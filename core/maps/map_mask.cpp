@@ -24,8 +24,12 @@ std::vector<ClipPlane> mask_clip_planes(const ShadowMap& map) {
 std::vector<glm::dvec2> mask_outline(const ShadowMap& map) {
     HomogeneousPolygon square{{0, 0, 0, 1}, {1, 0, 0, 1}, {1, 1, 0, 1}, {0, 1, 0, 1}};
     for (const ClipPlane& plane : mask_clip_planes(map)) square = clip(square, plane);
-    std::vector<glm::dvec2> outline;
-    for (const glm::dvec4& h : square) outline.emplace_back(h.x / h.w, h.y / h.w);
+    std::vector<glm::dvec2> outline;  // a corner on a cutting line comes back twice: once
+    for (const glm::dvec4& h : square) {
+        const glm::dvec2 corner(h.x / h.w, h.y / h.w);
+        if (outline.empty() || corner != outline.back()) outline.push_back(corner);
+    }
+    if (outline.size() > 1 && outline.front() == outline.back()) outline.pop_back();
     return outline;
 }
 
