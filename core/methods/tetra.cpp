@@ -139,11 +139,11 @@ PolygonSet face_volume(const ShadowMap& map, const Face& face) {
     return volume;
 }
 
-void record_faces(Trace& t, const ShadowSetup& setup) {
+// Each face's volume, its name beyond the tip of its axis's arrow (`length` from the light).
+void record_faces(Trace& t, const ShadowSetup& setup, const Light& light, double length) {
     for (int f = 0; f < 4; ++f) {
         const ShadowMap& map = setup.maps[f];
         const std::string name = std::string("face ") + kFaces[f].name;
-        const glm::dvec4 far_corner = glm::inverse(map.world_to_uvz) * glm::dvec4(kFaces[f].quarter[0], 1.0, 1.0);
         t.add("tetra-face-" + std::to_string(f), "Face " + std::string(kFaces[f].name),
               "a perspective map along a" + std::to_string(f) +
                   " whose triangle (tangents up to 2√2 from the axis) an affine map of (u, v) takes onto its quarter "
@@ -151,7 +151,7 @@ void record_faces(Trace& t, const ShadowSetup& setup) {
               Space::world)
             .value("world_to_uvz", map.world_to_uvz)
             .map_shape(f, name, face_volume(map, kFaces[f]), Role::map)
-            .map_shape(f, name + " label", Label{glm::dvec3(far_corner) / far_corner.w, name});
+            .map_shape(f, name + " label", Label{light.position + 1.5 * length * kFaces[f].axis, name});
     }
 }
 
@@ -187,8 +187,9 @@ ShadowSetup compute_tetra(const ShadowInputs& in, const Settings& s, Trace* trac
     record(trace, [&](Trace& t) {
         t.set_frame(Space::light, glm::translate(glm::dmat4(1.0), -in.light.position));  // world axes about the light
         record_range(t, in.light, range, !in.light.range);
-        record_axes(t, in.light, 0.5 * range.near + 0.1 * range.far);
-        record_faces(t, setup);
+        const double axis_length = 0.5 * range.near + 0.1 * range.far;
+        record_axes(t, in.light, axis_length);
+        record_faces(t, setup, in.light, axis_length);
         record_packing(t);
     });
     record_output(setup, in.caster_points(), trace);
