@@ -129,17 +129,20 @@ void record_axes(Trace& t, const Light& light, double length) {
     step.shape("tetrahedron", SegmentSet{edges}, Role::map);
 }
 
-// Face f's volume: its triangle from the near to the far plane, as five faces.
-PolygonSet face_volume(const ShadowMap& map, const Face& face) {
-    const glm::dmat4 world_from_uvz = glm::inverse(map.world_to_uvz);
-    const auto at = [&](int k, double depth) { return world_from_uvz * glm::dvec4(face.quarter[k], depth, 1.0); };
-    PolygonSet volume;
-    volume.add({at(0, 0.0), at(2, 0.0), at(1, 0.0)}).add({at(0, 1.0), at(1, 1.0), at(2, 1.0)});
-    for (int k = 0; k < 3; ++k) volume.add({at(k, 0.0), at((k + 1) % 3, 0.0), at((k + 1) % 3, 1.0), at(k, 1.0)});
-    return volume;
+// Face f's cone of directions as the pyramid from the light to the tetrahedron's face f at `length`
+// along its axis (the tetrahedron of step tetra-axes): the part of the world the face's map serves.
+PolygonSet face_pyramid(const Light& light, const Face& face, double length) {
+    std::vector<glm::dvec4> base;
+    for (const glm::dvec3& corner : corner_directions(face))
+        base.emplace_back(light.position + length * corner / glm::dot(corner, face.axis), 1.0);
+    const glm::dvec4 apex(light.position, 1.0);
+    PolygonSet pyramid;
+    pyramid.add(base);
+    for (int k = 0; k < 3; ++k) pyramid.add({apex, base[(k + 1) % 3], base[k]});
+    return pyramid;
 }
 
-// Each face's volume, its name beyond the tip of its axis's arrow (`length` from the light).
+// Each face's cone, its name beyond the tip of its axis's arrow (`length` from the light).
 void record_faces(Trace& t, const ShadowSetup& setup, const Light& light, double length) {
     for (int f = 0; f < 4; ++f) {
         const ShadowMap& map = setup.maps[f];
@@ -150,7 +153,7 @@ void record_faces(Trace& t, const ShadowSetup& setup, const Light& light, double
                   "of the texture",
               Space::world)
             .value("world_to_uvz", map.world_to_uvz)
-            .map_shape(f, name, face_volume(map, kFaces[f]), Role::map)
+            .map_shape(f, name, face_pyramid(light, kFaces[f], length), Role::map)
             .map_shape(f, name + " label", Label{light.position + 1.5 * length * kFaces[f].axis, name});
     }
 }
