@@ -33,4 +33,14 @@ std::vector<glm::dvec2> mask_outline(const ShadowMap& map) {
     return outline;
 }
 
+double mask_area(const ShadowMap& map) {
+    const std::vector<glm::dvec2> outline = mask_outline(map);
+    double twice = 0.0;  // the shoelace formula
+    for (size_t k = 0; k < outline.size(); ++k) {
+        const glm::dvec2 a = outline[k], b = outline[(k + 1) % outline.size()];
+        twice += a.x * b.y - a.y * b.x;
+    }
+    return twice / 2.0;
+}
+
 }  // namespace shadowlab

@@ -26,4 +26,7 @@ std::vector<ClipPlane> mask_clip_planes(const ShadowMap& map);
 // The map's region of its square: the unit square cut by the mask, counter-clockwise in (u, v).
 std::vector<glm::dvec2> mask_outline(const ShadowMap& map);
 
+// The share of its square the map's region holds: 1 without a mask, 1/4 for a tetrahedron's face.
+double mask_area(const ShadowMap& map);
+
 }  // namespace shadowlab
