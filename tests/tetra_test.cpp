@@ -103,6 +103,16 @@ TEST(Tetra, EveryDirectionInExactlyOneFaceInsideItsTriangle) {
     }
 }
 
+// A margin beyond a twelfth of the texture's side would enlarge a face past twice its size: cut, by name.
+TEST(Tetra, AMarginBeyondATwelfthOfTheTextureIsCutByName) {
+    const ShadowSetup cut = tetra(lamp_room_inputs(240), {{"margin", "30"}});
+    ASSERT_TRUE(has_note(cut.fallbacks, NoteKind::margin_reduced));
+    EXPECT_TRUE(are_fallbacks(cut.fallbacks));
+    const ShadowSetup most = tetra(lamp_room_inputs(240), {{"margin", "20"}});
+    EXPECT_TRUE(most.fallbacks.empty());
+    for (int f = 0; f < 4; ++f) EXPECT_EQ(cut.maps[f].world_to_uvz, most.maps[f].world_to_uvz) << "20 texels, R / 12";
+}
+
 // Without a margin a face's corners, the directions -a_g of the vertices opposite its neighbours, land
 // on its quarter's corners; a direction on the boundary plane of two faces that unfold edge to edge
 // (maps 0, 1 and 2 about the vertex -a_3 at the centre) lands on the same point of both, at the same depth.

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "maps/map_mask.hpp"
@@ -82,8 +83,16 @@ std::array<glm::dvec3, 3> corner_directions(const Face& face) {
 
 // The enlargement s of each face's triangle about its centre that leaves `margin` texels of its
 // quarter beyond its edges: a quarter's centroid lies a sixth of the texture's side from its base
-// (its nearest edge), so its image shrunk by 1 / s leaves (1 - 1 / s) R / 6 texels there. At most 2.
-double enlargement(double margin, int resolution) { return 1.0 / (1.0 - std::min(6.0 * margin / resolution, 0.5)); }
+// (its nearest edge), so its image shrunk by 1 / s leaves (1 - 1 / s) R / 6 texels there. At most 2
+// (a margin of R / 12), named when it cuts the margin.
+double enlargement(double margin, int resolution, ShadowSetup& setup) {
+    const double most = resolution / 12.0;
+    if (margin > most)
+        add_fallback(setup, Note{NoteKind::margin_reduced, "margin " + label_number(margin) + " texels cut to " +
+                                                               label_number(most) + " in a texture of " +
+                                                               std::to_string(resolution) + " texels a side"});
+    return 1.0 / (1.0 - 6.0 * std::min(margin, most) / resolution);
+}
 
 ShadowMap face_map(const Light& light, const LightRange& range, int f, double s) {
     const Face& face = kFaces[f];
@@ -184,7 +193,7 @@ ShadowSetup compute_tetra(const ShadowInputs& in, const Settings& s, Trace* trac
     ShadowSetup setup;
     if (!omni_or_focused("tetra", in, s, setup, trace)) return setup;
     const LightRange range = omni_range(in);
-    const double enlarged = enlargement(s.number("margin"), in.texture_resolution);
+    const double enlarged = enlargement(s.number("margin"), in.texture_resolution, setup);
     for (int f = 0; f < 4; ++f) setup.maps.push_back(face_map(in.light, range, f, enlarged));
     setup.selection = {.rule = MapSelection::Rule::face_axis, .centre = in.light.position};
     record(trace, [&](Trace& t) {
