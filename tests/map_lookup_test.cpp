@@ -84,15 +84,20 @@ TEST(MapLookup, TileBoundsPickTheFirstMapHoldingThePoint) {
     EXPECT_EQ(select_map(setup, {9, 0, 0}), -1);
 }
 
+// The face_axis rule over a cube's axes (+x, -x, +y, -y, +z, -z) is the major axis, x before y
+// before z on ties, as a GPU's cube map picks.
 TEST(MapLookup, CubeFacesByTheMajorAxis) {
     ShadowSetup setup;
-    setup.selection = {.rule = MapSelection::Rule::cube_face, .centre = {1, 2, 3}};
+    setup.selection = {.rule = MapSelection::Rule::face_axis, .centre = {1, 2, 3}};
     for (int face = 0; face < 6; ++face) {
         ShadowMap m;
         m.projection = Projection::cube_face;
         m.cube_face = face;
+        m.face_axis[face / 2] = face % 2 == 0 ? 1.0 : -1.0;
         setup.maps.push_back(m);
     }
+    EXPECT_EQ(select_map(setup, {2, 3, 3}), 0);  // ties: x before y
+    EXPECT_EQ(select_map(setup, {1, 1, 2}), 3);  // y before z
     EXPECT_EQ(select_map(setup, {5, 2, 3}), 0);
     EXPECT_EQ(select_map(setup, {-5, 2, 3}), 1);
     EXPECT_EQ(select_map(setup, {1, 2.5, 3}), 2);

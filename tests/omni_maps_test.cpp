@@ -1,4 +1,4 @@
-// Omnidirectional maps of spot and point lights (dpsm, cube): every visible receiver in its map,
+// Omnidirectional maps of spot and point lights (dpsm, cube, tetra): every visible receiver in its map,
 // depth growing along the light's rays, the paraboloids' centres and rims where the closed forms
 // put them, the cube's faces meeting edge to edge, the light's range used as given, and both
 // covering the lamp room where one perspective map cannot.
@@ -32,7 +32,7 @@ TEST(OmniMaps, EveryVisibleReceiverLandsInItsMap) {
         const Scene scene = load_scene(source_path(std::string("data/scenes/") + file));
         const MeasureContext context = prepare_measurement(scene, 160, 90);
         const ShadowInputs in = gather_inputs(scene);
-        for (const char* method : {"dpsm", "cube"}) {
+        for (const char* method : {"dpsm", "cube", "tetra"}) {
             const ShadowSetup setup = run(method, in);
             EXPECT_TRUE(setup.fallbacks.empty()) << method << " on " << file << ": " << describe(setup.fallbacks);
             const ReferenceImage& seen = context.reference;
@@ -56,7 +56,7 @@ TEST(OmniMaps, DepthGrowsAlongEveryRayFromTheLight) {
     const ShadowInputs in = gather_inputs(lamp_room());
     std::mt19937 rng(14);
     std::normal_distribution<double> gauss;
-    for (const char* method : {"dpsm", "cube"}) {
+    for (const char* method : {"dpsm", "cube", "tetra"}) {
         const ShadowSetup setup = run(method, in);
         for (int k = 0; k < 500; ++k) {
             const glm::dvec3 direction = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
@@ -122,7 +122,7 @@ TEST(OmniMaps, TheLightsRangeIsUsedAsGivenElseFitToTheScene) {
 
 TEST(OmniMaps, ADirectionalLightTakesTheFocusedMapByName) {
     const ShadowInputs in = gather_inputs(load_scene(source_path("data/scenes/box_on_plane.json")));
-    for (const char* method : {"dpsm", "cube"}) {
+    for (const char* method : {"dpsm", "cube", "tetra"}) {
         const ShadowSetup setup = run(method, in);
         EXPECT_TRUE(has_note(setup.fallbacks, NoteKind::directional_light)) << method;
         ASSERT_EQ(setup.maps.size(), 1u);

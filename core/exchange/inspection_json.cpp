@@ -102,6 +102,11 @@ Json to_json(const ShadowMap& map) {
     Json& parameters = kind.parameters_key ? out[kind.parameters_key] : out;
     for (const NamedValue& v : kind.parameters(map)) parameters[v.name] = to_json(v.value);
     if (kind.numbered_face) out["cube_face"] = map.cube_face;
+    if (map.face_axis != glm::dvec3(0.0)) out["face_axis"] = to_json(map.face_axis);
+    if (!map.mask.empty()) {  // the half-planes a u + b v + c >= 0 its casters are drawn in
+        Json& mask = out["mask"] = Json::array();
+        for (const glm::dvec3& half : map.mask) mask.push_back(to_json(half));
+    }
     out["viewport"] = to_json(map.viewport);
     out["z_bias_scale"] = map.z_bias_scale;
     return out;
@@ -131,7 +136,7 @@ Json to_json(const MapSelection& s) {
     Json out = {{"rule", to_string(s.rule)}};
     if (s.rule == MapSelection::Rule::view_depth)
         out.update({{"eye", to_json(s.eye)}, {"view_axis", to_json(s.view_axis)}, {"split_depths", s.split_depths}});
-    if (s.rule == MapSelection::Rule::cube_face) out["centre"] = to_json(s.centre);
+    if (s.rule == MapSelection::Rule::face_axis) out["centre"] = to_json(s.centre);
     if (s.rule == MapSelection::Rule::pages) out["pages"] = to_json(s.pages);
     return out;
 }

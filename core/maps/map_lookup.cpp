@@ -11,11 +11,15 @@ namespace {
 
 bool in_unit_range(double t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
 
-// 0..5 for +x, -x, +y, -y, +z, -z: the major axis of r and its sign.
-int major_axis_face(const glm::dvec3& r) {
-    const glm::dvec3 a = glm::abs(r);
-    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-    return 2 * axis + (r[axis] < 0.0 ? 1 : 0);
+// The map whose face axis has the largest dot with r, the first on ties. The faces of a polyhedron
+// about the centre (a cube's, a tetrahedron's, their axes the directions to the faces' centres)
+// share its sphere of directions so: r meets the face plane dot(x, a) = h at h / dot(r, a), the
+// nearest plane first. For a cube's axes in the order +x, -x, +y, -y, +z, -z it is the major axis.
+int nearest_face(const ShadowSetup& setup, const glm::dvec3& r) {
+    int best = 0;
+    for (int i = 1; i < int(setup.maps.size()); ++i)
+        if (glm::dot(setup.maps[i].face_axis, r) > glm::dot(setup.maps[best].face_axis, r)) best = i;
+    return best;
 }
 
 int first_map(const ShadowSetup& setup, auto&& holds) {
@@ -51,7 +55,7 @@ const char* to_string(MapSelection::Rule rule) {
         case MapSelection::Rule::only: return "one map";
         case MapSelection::Rule::view_depth: return "by view depth";
         case MapSelection::Rule::tile_bounds: return "by tile bounds";
-        case MapSelection::Rule::cube_face: return "by cube face";
+        case MapSelection::Rule::face_axis: return "by face axis";
         case MapSelection::Rule::hemisphere: return "by hemisphere";
         case MapSelection::Rule::pages: return "by page";
     }
@@ -81,10 +85,7 @@ int select_map(const ShadowSetup& setup, const glm::dvec3& world) {
         case MapSelection::Rule::view_depth: return by_view_depth(setup, world);
         case MapSelection::Rule::tile_bounds:
             return first_map(setup, [&](const ShadowMap& m) { return on_map(map_homogeneous(m, world)); });
-        case MapSelection::Rule::cube_face: {
-            const int face = major_axis_face(world - setup.selection.centre);
-            return first_map(setup, [&](const ShadowMap& m) { return m.cube_face == face; });
-        }
+        case MapSelection::Rule::face_axis: return nearest_face(setup, world - setup.selection.centre);
         case MapSelection::Rule::hemisphere:
             return first_map(setup, [&](const ShadowMap& m) { return hemisphere_side(m, world) >= 0.0; });
         case MapSelection::Rule::pages: return resident_map(setup.selection.pages, world);

@@ -15,7 +15,7 @@ namespace shadowlab {
 enum class Projection {
     linear,      // a 4x4, world (x, y, z, 1) -> (u w, v w, d_pre, w): orthographic, perspective and warped maps
     paraboloid,  // one hemisphere of a dual-paraboloid map (Brabec, Annen and Seidel 2002)
-    cube_face,   // one 90° face of a cube map: a linear 4x4, picked by the major axis of p - centre
+    cube_face,   // one 90° face of a cube map: a linear 4x4, numbered 0..5 for +x, -x, +y, -y, +z, -z
 };
 const char* to_string(Projection projection);  // its kind's name
 
@@ -34,6 +34,13 @@ struct ShadowMap {
     Paraboloid paraboloid;                    // paraboloid only
     int cube_face = 0;                        // cube_face only: 0..5 for +x, -x, +y, -y, +z, -z
     glm::dvec4 viewport{0.0, 0.0, 1.0, 1.0};  // (u0, v0, u1, v1): the map's tile in the texture
+    // The selection rule face_axis: the unit direction from the selection's centre this map faces.
+    glm::dvec3 face_axis{0.0};
+    // The map's mask (maps/map_mask.hpp): half-planes a u + b v + c >= 0, each (a, b, c), in the map's
+    // (u, v); its casters are drawn only where all hold (a stencil, as a tetrahedron's faces share one
+    // texture). Empty: the whole square. The lookup does not test it: a setup whose maps have masks
+    // selects each point a map whose mask holds it.
+    std::vector<glm::dvec3> mask;
     // Pre-division depth offset per world unit of bias along the light (XPSM step 18):
     // d' = (d_pre - z_bias_scale * bias) / w.
     double z_bias_scale = 1.0;
@@ -49,7 +56,7 @@ struct MapSelection {
         only,         // one map serves every point
         view_depth,   // map i serves view depths in [split_depths[i], split_depths[i + 1]) (cascades)
         tile_bounds,  // the first map whose (u, v) holds the point (seed 003's atlas lookup)
-        cube_face,    // the face of the major axis of p - centre
+        face_axis,    // the map whose face_axis has the largest dot with p - centre (cube, tetrahedron faces)
         hemisphere,   // the paraboloid whose +z side holds p
         pages,        // the finest resident page of a virtual map's table that holds p (maps/page_table.hpp)
     };
@@ -60,7 +67,7 @@ struct MapSelection {
     // view_depth: the share of each split, at its far end, over which map i crossfades into map i + 1
     // (0: a hard seam; at most 0.5).
     double blend_band = 0.0;
-    glm::dvec3 centre{0.0};  // cube_face: the light's position
+    glm::dvec3 centre{0.0};  // face_axis: the light's position
     PageTable pages;         // pages: the levels and which map holds each resident page
 };
 const char* to_string(MapSelection::Rule rule);

@@ -21,7 +21,8 @@ struct Face {
     const char* name;
     glm::dvec3 axis;
 };
-// In the order of map_lookup's major_axis_face: +x, -x, +y, -y, +z, -z.
+// +x, -x, +y, -y, +z, -z: in this order the face_axis rule's first on ties is the major axis's
+// (x before y before z), as a GPU's cube map picks.
 constexpr std::array<Face, 6> kFaces{{{"+x", {1, 0, 0}},
                                       {"-x", {-1, 0, 0}},
                                       {"+y", {0, 1, 0}},
@@ -42,6 +43,7 @@ ShadowMap face_map(const Light& light, const LightRange& range, int face) {
     ShadowMap map = perspective_map_of(light_from_world, Aabb{{-1.0, -1.0, face_near}, {1.0, 1.0, range.far}});
     map.projection = Projection::cube_face;
     map.cube_face = face;
+    map.face_axis = axis;
     map.viewport = tile_viewport(face_tile(face));
     return map;
 }
@@ -78,7 +80,7 @@ ShadowSetup compute_cube(const ShadowInputs& in, const Settings& s, Trace* trace
     if (!omni_or_focused("cube", in, s, setup, trace)) return setup;
     const LightRange range = omni_range(in);
     for (int face = 0; face < 6; ++face) setup.maps.push_back(face_map(in.light, range, face));
-    setup.selection = {.rule = MapSelection::Rule::cube_face, .centre = in.light.position};
+    setup.selection = {.rule = MapSelection::Rule::face_axis, .centre = in.light.position};
     record(trace, [&](Trace& t) {
         t.set_frame(Space::light, glm::translate(glm::dmat4(1.0), -in.light.position));  // world axes about the light
         record_range(t, in.light, range, !in.light.range);

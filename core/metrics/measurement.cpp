@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lookup/lookup_settings.hpp"
+#include "maps/map_mask.hpp"
 #include "math/stopwatch.hpp"
 #include "methods/step_figures.hpp"
 #include "methods/warp_common.hpp"
@@ -43,7 +44,8 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     m.bias = bias;
     const ShadowSetup setup = timed_setup(c, method, settings, resolution, m.setup_ms);
     m.fallbacks = setup.fallbacks;
-    for (const ShadowMap& map : setup.maps) m.texels_used += std::pow(tile_resolution(map, resolution), 2);
+    for (const ShadowMap& map : setup.maps)
+        m.texels_used += std::pow(tile_resolution(map, resolution), 2) * mask_area(map);
     m.lookup = lookup_from(settings, bias);
     const Stopwatch raster_watch;
     const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution, m.lookup.format);

@@ -29,7 +29,8 @@ MeasureContext prepare_measurement(const Scene& scene, int width, int height, in
 struct Measurement {
     std::string method;
     int resolution = 0;        // 0 for a technique without a map
-    double texels_used = 0.0;  // maps: the texels the setup's tiles hold (an atlas may leave part of the texture empty)
+    double texels_used = 0.0;  // maps: the texels the setup's tiles (their masks' share) hold (an atlas may leave part
+                               // of the texture empty)
     double bias = -1.0;        // world units, replacing the settings' bias; negative: the settings' (lookup.bias)
     ShadowError error;
     double setup_ms = 0.0, raster_ms = 0.0;

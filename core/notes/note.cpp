@@ -23,6 +23,8 @@ const std::vector<NoteInfo>& all_note_kinds() {
          "the camera's depth image shows none: the frustum's depth bounds"},
         {directional_light, F, "a directional light",
          "an omnidirectional map needs a light's position: the focused map"},
+        {margin_reduced, F, "margin reduced",
+         "a tetrahedron face's margin cut to a twelfth of the texture's side: each face at most twice its size"},
         {no_depth_image, F, "no camera depth image",
          "visible depth bounds not measured here: the frustum's depth bounds"},
         {view_outside_cone, F, "view outside the spot's cone",

@@ -26,6 +26,7 @@ enum class NoteKind {
     no_visible_receiver,
     no_depth_image,
     directional_light,
+    margin_reduced,
     view_outside_cone,
     light_on_region,
     warp_not_needed,

@@ -7,6 +7,7 @@
 #include "geometry/homogeneous_clip.hpp"
 #include "math/parallel_rows.hpp"
 #include "maps/map_lookup.hpp"
+#include "maps/map_mask.hpp"
 #include "maps/projection_kind.hpp"
 #include "raster/paraboloid_edges.hpp"
 
@@ -34,6 +35,15 @@ std::array<ClipPlane, 5> map_planes(double min_w) {
         {{{0, 0, 0, 1}, min_w}, {{1, 0, 0, 0}, 0.0}, {{-1, 0, 0, 1}, 0.0}, {{0, 1, 0, 0}, 0.0}, {{0, -1, 0, 1}, 0.0}}};
 }
 
+// Calls `each` with the map's half-spaces and then its mask's (maps/map_mask.hpp), until it returns false.
+template <class Each>
+void for_each_plane(double min_w, const std::vector<ClipPlane>& mask, Each&& each) {
+    for (const ClipPlane& plane : map_planes(min_w))
+        if (!each(plane)) return;
+    for (const ClipPlane& plane : mask)
+        if (!each(plane)) return;
+}
+
 template <class Vertices>
 double min_w_of(const Vertices& vertices) {
     double largest_w = 0.0;
@@ -41,10 +51,13 @@ double min_w_of(const Vertices& vertices) {
     return kMinRelativeW * largest_w;
 }
 
-Polygon clip_to_map(Polygon polygon) {
+Polygon clip_to_map(Polygon polygon, const std::vector<ClipPlane>& mask) {
     const double min_w = min_w_of(polygon);
     if (!(min_w > 0.0)) return {};
-    for (const ClipPlane& plane : map_planes(min_w)) polygon = clip(polygon, plane);
+    for_each_plane(min_w, mask, [&](const ClipPlane& plane) {
+        polygon = clip(polygon, plane);
+        return true;
+    });
     return polygon;
 }
 
@@ -53,31 +66,35 @@ Polygon clip_to_map(Polygon polygon) {
 // quick answers are exactly what clipping would give, without making a polygon.
 enum class Clipping { keeps, removes, cuts };
 
-Clipping clipping_of(const std::array<glm::dvec4, 3>& triangle) {
+Clipping clipping_of(const std::array<glm::dvec4, 3>& triangle, const std::vector<ClipPlane>& mask) {
     const double min_w = min_w_of(triangle);
     if (!(min_w > 0.0)) return Clipping::removes;
-    bool whole = true;
-    for (const ClipPlane& plane : map_planes(min_w)) {
+    bool whole = true, removed = false;
+    for_each_plane(min_w, mask, [&](const ClipPlane& plane) {
         int outside = 0;
         for (const glm::dvec4& h : triangle) outside += !(glm::dot(plane.normal, h) - plane.offset >= 0.0);
-        if (outside == 3) return Clipping::removes;
+        removed = outside == 3;
         whole = whole && outside == 0;
-    }
+        return !removed;
+    });
+    if (removed) return Clipping::removes;
     return whole ? Clipping::keeps : Clipping::cuts;
 }
 
 // Every vertex under the map, projected once for all the triangles that share it: homogeneous
-// (u, v, d_pre, w) and its kind's clip distance (1 for a kind that clips at no plane). The kind is
-// resolved once for the map.
+// (u, v, d_pre, w) and its kind's clip distance (1 for a kind that clips at no plane); and the map's
+// mask as clip planes. The kind is resolved once for the map.
 struct MapVertices {
     std::vector<glm::dvec4> homogeneous;
     std::vector<double> side;
+    std::vector<ClipPlane> mask;
 };
 
 MapVertices map_vertices(const std::vector<glm::dvec3>& world, const ShadowMap& map) {
     const ProjectionKind& kind = projection_kind(map);
     MapVertices out{.homogeneous = std::vector<glm::dvec4>(world.size()),
-                    .side = std::vector<double>(world.size(), 1.0)};
+                    .side = std::vector<double>(world.size(), 1.0),
+                    .mask = mask_clip_planes(map)};
     for (std::size_t i = 0; i < world.size(); ++i) out.homogeneous[i] = kind.homogeneous(map, world[i]);
     if (kind.clip_distance)
         for (std::size_t i = 0; i < world.size(); ++i) out.side[i] = kind.clip_distance(map, world[i]);
@@ -113,7 +130,7 @@ void add_on_map(const std::array<int, 3>& corners, const MapVertices& vertices, 
         behind += !(side[k] >= 0.0);
     }
     if (behind == 3) return;
-    const Clipping clipping = behind == 0 ? clipping_of(triangle) : Clipping::cuts;
+    const Clipping clipping = behind == 0 ? clipping_of(triangle, vertices.mask) : Clipping::cuts;
     if (clipping == Clipping::removes) return;
     if (clipping == Clipping::keeps) {
         out.push_back({to_screen(triangle[0], map, resolution), to_screen(triangle[1], map, resolution),
@@ -123,7 +140,8 @@ void add_on_map(const std::array<int, 3>& corners, const MapVertices& vertices, 
     const Polygon on_hemisphere =
         clip_where(Polygon(triangle.begin(), triangle.end()), [&](std::size_t i) { return side[i]; });
     std::vector<ScreenVertex> screen;
-    for (const glm::dvec4& h : clip_to_map(on_hemisphere)) screen.push_back(to_screen(h, map, resolution));
+    for (const glm::dvec4& h : clip_to_map(on_hemisphere, vertices.mask))
+        screen.push_back(to_screen(h, map, resolution));
     for (std::size_t k = 1; k + 1 < screen.size(); ++k) out.push_back({screen[0], screen[k], screen[k + 1]});
 }
 

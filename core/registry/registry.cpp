@@ -11,6 +11,7 @@
 #include "methods/focused.hpp"
 #include "methods/lispsm.hpp"
 #include "methods/psm.hpp"
+#include "methods/tetra.hpp"
 #include "methods/tsm.hpp"
 #include "methods/uniform.hpp"
 #include "methods/virtual_map.hpp"
@@ -119,6 +120,13 @@ std::deque<Method>& registry() {
          .settings = cube_settings(),
          .lights = kPositionedOnly,
          .compute_maps = compute_cube},
+        {.name = "tetra",
+         .title = "Tetrahedron shadow map",
+         .description = "Liao, bgfx: four perspective faces of a tetrahedron around the light in one texture, each "
+                        "in its triangle, chosen by the nearest face axis",
+         .settings = tetra_settings(),
+         .lights = kPositionedOnly,
+         .compute_maps = compute_tetra},
         {.name = "custom",
          .title = "Your engine's matrices",
          .description = "an engine's light view-projections, read from a GLSL, HLSL or JSON file under its named "

@@ -60,7 +60,7 @@ struct MapArrays {
     glm::mat4 paraboloid_frame[kMaxMaps]{};  // a mat3 in a mat4: vtkShaderProgram sets no mat3 arrays
     float paraboloid_near[kMaxMaps]{};
     float paraboloid_far[kMaxMaps]{};
-    int cube_face[kMaxMaps]{};
+    glm::vec3 face_axis[kMaxMaps]{};
     glm::vec4 viewport[kMaxMaps]{};
     glm::vec4 tile_texels[kMaxMaps]{};  // first and last texel (x, y, x, y) of the tile
 };
@@ -106,7 +106,7 @@ MapArrays map_arrays(const std::vector<ShadowMap>& maps, int resolution) {
         a.paraboloid_frame[i] = glm::mat4(glm::mat3(map.paraboloid.frame_from_world));
         a.paraboloid_near[i] = static_cast<float>(map.paraboloid.near);
         a.paraboloid_far[i] = static_cast<float>(map.paraboloid.far);
-        a.cube_face[i] = map.cube_face;
+        a.face_axis[i] = glm::vec3(map.face_axis);
         a.viewport[i] = glm::vec4(map.viewport);
         a.tile_texels[i] = glm::vec4(tile.x, tile.y, tile.x + tile.width - 1, tile.y + tile.height - 1);
     }
@@ -229,7 +229,7 @@ bool set_lookup_uniforms(ProgramUniforms& program, MapArrays& maps, const Shadow
     std::transform(s.split_depths.begin(), s.split_depths.begin() + splits, split_depths,
                    [](double depth) { return static_cast<float>(depth); });
     return all_set(program.SetUniformi("shadowMapCount", static_cast<int>(setup.maps.size())),
-                   program.SetUniform1iv("shadowMapCubeFace", kMaxMaps, maps.cube_face),
+                   program.SetUniform3fv("shadowMapFaceAxis", kMaxMaps, glm::value_ptr(maps.face_axis[0])),
                    program.SetUniform4fv("shadowMapViewport", kMaxMaps, glm::value_ptr(maps.viewport[0])),
                    program.SetUniform4fv("shadowMapTileTexels", kMaxMaps, glm::value_ptr(maps.tile_texels[0])),
                    program.SetUniformi("shadowSelectionRule", static_cast<int>(s.rule)),
@@ -354,10 +354,11 @@ std::string glsl_constants() {
     };
     using Rule = MapSelection::Rule;
     return constant("shadowMaxMaps", kMaxMaps) + constant("shadowMaxRampStops", ShadowMapPass::kMaxRampStops) +
+           constant("shadowMaxMaskEdges", ShadowMapPass::kMaxMaskEdges) +
            constant("shadowMaxTaps", ShadowMapPass::kMaxTaps) +
            real("shadowMaxSearchTexels", ShadowReader::kMaxSearchTexels) + constant("shadowRuleOnly", Rule::only) +
            constant("shadowRuleViewDepth", Rule::view_depth) + constant("shadowRuleTileBounds", Rule::tile_bounds) +
-           constant("shadowRuleCubeFace", Rule::cube_face) + constant("shadowRuleHemisphere", Rule::hemisphere) +
+           constant("shadowRuleFaceAxis", Rule::face_axis) + constant("shadowRuleHemisphere", Rule::hemisphere) +
            constant("shadowOverlayNone", MapOverlay::none) +
            constant("shadowOverlayCascadeIndex", MapOverlay::cascade_index) +
            real("shadowOverlayStrength", kOverlayStrength) + real("shadowTexelsLog2Range", kTexelsLog2Range);
@@ -415,6 +416,10 @@ void ShadowMapPass::SetSetup(const ShadowSetup& setup, int resolution) {
     else if (setup.maps.size() > static_cast<size_t>(kMaxMaps))
         throw std::invalid_argument("ShadowMapPass: the setup has " + std::to_string(setup.maps.size()) +
                                     " maps; the GPU pass holds at most " + std::to_string(kMaxMaps));
+    for (const ShadowMap& map : setup.maps)
+        if (map.mask.size() > static_cast<size_t>(kMaxMaskEdges))
+            throw std::invalid_argument("ShadowMapPass: a map's mask of " + std::to_string(map.mask.size()) +
+                                        " half-planes; the GPU pass holds at most " + std::to_string(kMaxMaskEdges));
     setup_ = setup;
     resolution_ = resolution;
     page_textures_current_ = false;
@@ -602,6 +607,8 @@ void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenG
     drawn_map_ = map;
     const bool clips = projection_kind(setup_.maps[map]).clip_distance != nullptr;
     if (clips) glEnable(GL_CLIP_DISTANCE0);  // behind its plane (a hemisphere's): cut, as the CPU rasterizer does
+    const int mask_edges = static_cast<int>(setup_.maps[map].mask.size());
+    for (int k = 0; k < mask_edges; ++k) glEnable(GL_CLIP_DISTANCE1 + k);  // outside its mask: cut likewise
     if (vtkProp* split = split_casters_[map]) {
         vtkRenderState split_state(depth_state->GetRenderer());
         split_state.SetPropArrayAndCount(&split, 1);
@@ -612,6 +619,7 @@ void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenG
     } else
         depth_pass_->Render(depth_state);
     if (clips) glDisable(GL_CLIP_DISTANCE0);
+    for (int k = 0; k < mask_edges; ++k) glDisable(GL_CLIP_DISTANCE1 + k);
 }
 
 // Stage 2: the scene, each fragment looked up in its map.
@@ -684,7 +692,11 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbs
                 ? map_arrays({format.reversed ? with_reversed_depth(setup_.maps[drawn_map_]) : setup_.maps[drawn_map_]},
                              resolution_)
                 : map_arrays(drawn_setup(setup_, format), resolution_);
+        glm::vec3 mask[kMaxMaskEdges]{};
+        const std::vector<glm::dvec3>& drawn_mask = setup_.maps[drawn_map_].mask;
+        std::transform(drawn_mask.begin(), drawn_mask.end(), mask, [](const glm::dvec3& h) { return glm::vec3(h); });
         return all_set(set_projection_uniforms(program, drawn), program.SetUniformi("shadowDrawnMap", drawn_map),
+                       program.SetUniform3fv("shadowDrawnMask", kMaxMaskEdges, glm::value_ptr(mask[0])),
                        program.SetUniform4f("shadowDrawnViewport", glm::value_ptr(drawn.viewport[drawn_map])),
                        program.SetUniformi("shadowDepthZeroToOne", format.reversed));
     }

@@ -9,7 +9,8 @@
 // glClipControl's [0, w] depth range, cleared to 0 and kept where greater), once per map into that
 // map's tile (placed by the vertex shader exactly where the CPU rasterizer places it, however its
 // edges fall between texels, and scissored to the tile's texels; depth clamped, as the CPU rasterizer
-// clamps casters before the near plane; a paraboloid clipped to its hemisphere, and its casters split first
+// clamps casters before the near plane; a map with a mask clipped to it by clip distances, as the CPU
+// rasterizer clips it (maps/map_mask.hpp); a paraboloid clipped to its hemisphere, and its casters split first
 // where the map asks, as the CPU rasterizer splits them: SetCasterTriangles; a page as any map, by its
 // own matrix). Stage 2 renders the scene
 // through `shade` (normally a vtkRenderStepsPass) and reads each fragment's visibility as the one CPU
@@ -53,6 +54,7 @@ public:
     static constexpr int kMaxMaps = 8;         // the shaders' uniform arrays hold this many maps (pages aside)
     static constexpr int kMaxPageLevels = 24;  // and this many levels of a virtual map's page table
     static constexpr int kMaxTaps = 81;        // and this many filter taps: kernel_size <= 9
+    static constexpr int kMaxMaskEdges = 4;    // and this many half-planes of a map's mask (clip distances 1..4)
 
     // What stage 2 writes: the surface shading (render/surface_shading.hpp), shadow tinted; white
     // where lit and black where shadowed; or the visibility itself as a grey level, unlit (for tests).
@@ -60,7 +62,8 @@ public:
 
     // The maps, their tiles and the rule that picks one per point; resolution: texels per side of
     // the whole texture. Throws std::invalid_argument for more than kMaxMaps maps, unless the rule is
-    // pages: then any number of linear maps, its table of at most kMaxPageLevels levels.
+    // pages: then any number of linear maps, its table of at most kMaxPageLevels levels; and for a
+    // map's mask of more than kMaxMaskEdges half-planes.
     void SetSetup(const ShadowSetup& setup, int resolution);
     // How fragments read the maps (the filter and the bias, as ShadowReader reads them) and how stage 1
     // stores them (lookup.format, as rasterize_depth stores them); the light and

@@ -16,10 +16,11 @@ namespace {
 
 constexpr double kMinW = 1e-9;
 
-// The half-spaces a placed primitive is cut to: w >= kMinW, and min <= x / w <= max on each axis
-// of the clip box, written as linear forms in (x, y, z, w) so that they hold before the division.
+// The half-spaces a placed primitive is cut to: w >= kMinW, the placement's own, and min <= x / w <= max
+// on each axis of the clip box, written as linear forms in (x, y, z, w) so that they hold before the division.
 std::vector<ClipPlane> clip_planes(const Placement& placement) {
     std::vector<ClipPlane> planes{{{0.0, 0.0, 0.0, 1.0}, kMinW}};
+    planes.insert(planes.end(), placement.cut.begin(), placement.cut.end());
     if (!placement.clip) return planes;
     for (int axis = 0; axis < 3; ++axis) {
         glm::dvec4 above(0.0), below(0.0);

@@ -1,7 +1,7 @@
 #pragma once
 // Core geometry as VTK poly data, carried into a space by a homogeneous world-to-space matrix and cut
-// there, before the division by w, to w > 0 and to an optional box: a line through w = 0 stops at
-// the box instead of running off to infinity.
+// there, before the division by w, to w > 0, to an optional box and to further half-spaces: a line
+// through w = 0 stops at the box instead of running off to infinity.
 #include <optional>
 #include <utility>
 #include <vector>
@@ -9,6 +9,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include "geometry/homogeneous_clip.hpp"
 #include "scene/tessellation.hpp"
 #include "trace/trace.hpp"
 
@@ -21,10 +22,11 @@ struct Placed {
 
 // How shapes are carried into a space.
 struct Placement {
-    glm::dmat4 to_space{1.0};  // world -> space, homogeneous
-    std::optional<Aabb> clip;  // the box of the space the shapes are cut to; none: only to w > 0
-    double reach = 0.0;        // world units a polygon's vertex at infinity is drawn from its finite neighbour
-    double head = 0.0;         // an arrow head's length in space units; 0: a quarter of the arrow
+    glm::dmat4 to_space{1.0};    // world -> space, homogeneous
+    std::optional<Aabb> clip;    // the box of the space the shapes are cut to; none: only to w > 0
+    std::vector<ClipPlane> cut;  // half-spaces of the space's (x, y, z, w) the shapes are cut to besides (a map's mask)
+    double reach = 0.0;          // world units a polygon's vertex at infinity is drawn from its finite neighbour
+    double head = 0.0;           // an arrow head's length in space units; 0: a quarter of the arrow
 };
 
 // A world point in the space: nullopt at or behind w = 0 or outside the clip box.

@@ -24,6 +24,7 @@
 
 #include "lookup/moment_map.hpp"
 #include "maps/map_lookup.hpp"
+#include "maps/map_mask.hpp"
 #include "maps/projection_kind.hpp"
 #include "methods/cascade_atlas.hpp"
 #include "raster/paraboloid_edges.hpp"
@@ -142,6 +143,24 @@ Aabb tile_in_pixels(const ShadowMap& map, int n) {
             {map.viewport.z * n - 0.5, map.viewport.w * n - 0.5, 1.5}};
 }
 
+// The map's mask (maps/map_mask.hpp) as half-spaces of the image's pixels, homogeneous: the
+// half-plane a u + b v + c >= 0 with u = (x - x0 w) / width, v = (y - y0 w) / height in its tile.
+std::vector<ClipPlane> mask_in_pixels(const ShadowMap& map, int n) {
+    const glm::dvec2 origin(map.viewport.x * n - 0.5, map.viewport.y * n - 0.5);
+    const glm::dvec2 size((map.viewport.z - map.viewport.x) * n, (map.viewport.w - map.viewport.y) * n);
+    std::vector<ClipPlane> cut;
+    for (const glm::dvec3& half : map.mask) {
+        const glm::dvec2 per_pixel = glm::dvec2(half) / size;
+        cut.push_back({.normal = {per_pixel, 0.0, half.z - glm::dot(per_pixel, origin)}, .offset = 0.0});
+    }
+    return cut;
+}
+
+// A point of the map's (u, v) in the image's pixels, on the drawing plane z.
+glm::dvec3 uv_in_pixels(const ShadowMap& map, const glm::dvec2& uv, int n, double z) {
+    return {texture_uv(map, uv) * double(n) - 0.5, z};
+}
+
 glm::dmat4 pixels_from_world(const ShadowMap& map, int n) {
     glm::dmat4 pixels_from_uvz(1.0);
     pixels_from_uvz[0][0] = (map.viewport.z - map.viewport.x) * n;
@@ -167,13 +186,33 @@ void add_disc_rim(const Aabb& tile, std::vector<std::pair<glm::dvec3, glm::dvec3
 // labels would cover the texture, and the caption says where the names are.
 constexpr size_t kMostLabelledTiles = 16;
 
+// A masked map's region of its tile (mask_outline), outlined, and its name at the region's centroid.
+void draw_mask(vtkRenderer* renderer, const ShadowSetup& setup, size_t i, int n,
+               std::vector<std::pair<glm::dvec3, glm::dvec3>>& edges) {
+    const ShadowMap& map = setup.maps[i];
+    const std::vector<glm::dvec2> outline = mask_outline(map);
+    if (outline.empty()) return;
+    glm::dvec2 centroid(0.0);
+    for (size_t k = 0; k < outline.size(); ++k) {
+        edges.push_back(
+            {uv_in_pixels(map, outline[k], n, 0.6), uv_in_pixels(map, outline[(k + 1) % outline.size()], n, 0.6)});
+        centroid += outline[k] / double(outline.size());
+    }
+    add_world_label(renderer, uv_in_pixels(map, centroid, n, 0.6), map_name(setup, i), 14, kTileBorder, {-24, -6});
+}
+
 // Each tile's border, its edges through the texel edges the viewport names, and a label inside its
 // top-left corner on two lines, so that it fits a small tile: the map's name ("cascade 2", "front",
-// "face +x"; map_name) over "1024²"; a paraboloid's disc drawn in its tile.
+// "face +x"; map_name) over "1024²"; a paraboloid's disc drawn in its tile; a masked map's region
+// instead (maps sharing a tile, each in its mask: a tetrahedron's faces).
 void draw_tiles(vtkRenderer* renderer, const ShadowSetup& setup, int n) {
     const bool labelled = setup.maps.size() <= kMostLabelledTiles;
     std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
     for (size_t i = 0; i < setup.maps.size(); ++i) {
+        if (!setup.maps[i].mask.empty()) {
+            draw_mask(renderer, setup, i, n, edges);
+            continue;
+        }
         const Aabb tile = tile_in_pixels(setup.maps[i], n);
         const glm::dvec3 a(tile.min.x, tile.min.y, 0.6), b(tile.max.x, tile.min.y, 0.6), c(tile.max.x, tile.max.y, 0.6),
             d(tile.min.x, tile.max.y, 0.6);
@@ -348,8 +387,10 @@ ShownTexture as_cross(const Inspection& in, const TexelValues& stored_texture, f
 }
 
 ShownTexture shown_texture(const Inspection& in, const TexelValues& stored_texture, float empty) {
-    if (in.setup.selection.rule == MapSelection::Rule::cube_face && in.setup.maps.size() == 6)
-        return as_cross(in, stored_texture, empty);
+    const bool cube =
+        in.setup.maps.size() == 6 && std::all_of(in.setup.maps.begin(), in.setup.maps.end(),
+                                                 [](const ShadowMap& m) { return projection_kind(m).numbered_face; });
+    if (cube) return as_cross(in, stored_texture, empty);
     return {stored_texture, in.setup};
 }
 
@@ -439,8 +480,9 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
             sagittas += "\n" + report.notes.back();
             continue;
         }
-        // Cut to the map's tile: what lies outside the map is not in it.
-        const Placement in_tile{.to_space = pixels_from_world(map, n), .clip = tile_in_pixels(map, n)};
+        // Cut to the map's tile and its mask: what lies outside them is not in the map.
+        const Placement in_tile{
+            .to_space = pixels_from_world(map, n), .clip = tile_in_pixels(map, n), .cut = mask_in_pixels(map, n)};
         auto frustum = actor_for(geometry_polydata(in.inputs.frustum, in_tile),
                                  painted.on_heat_ramp ? kFrustumOnHeat : kFrustumOnGrey);
         frustum->GetProperty()->SetLineWidth(2.0f);
@@ -454,8 +496,12 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
     toggle->grid = actor_for(texel_grid(n), glm::dvec3(0.35, 0.55, 0.85));
     renderer->AddActor(toggle->grid);
     renderer->AddObserver(vtkCommand::StartEvent, toggle);
-    const std::string maps =
-        in.setup.maps.size() > 1 ? ", " + std::to_string(in.setup.maps.size()) + " maps in tiles" : "";
+    const bool masked =
+        std::any_of(in.setup.maps.begin(), in.setup.maps.end(), [](const ShadowMap& m) { return !m.mask.empty(); });
+    const std::string maps = in.setup.maps.size() > 1
+                                 ? ", " + std::to_string(in.setup.maps.size()) +
+                                       (masked ? " maps in regions of one texture" : " maps in tiles")
+                                 : "";
     const std::string cross =
         n != in.resolution ? " (stored as 3 x 2, shown unfolded as a cross: +y above, -x +z +x -z across, -y below)"
                            : "";
@@ -470,6 +516,7 @@ ViewReport build_shadow_map_view(vtkRenderer* renderer, const Inspection& in, co
     add_caption(renderer, title + " — " + in.name() + words + maps + cross + " (" + (linear_maps ? frustum_words : "") +
                               (in.setup.maps.size() > kMostLabelledTiles
                                    ? "tile borders in green, too many to label: the Page table view names pages; "
+                               : masked                   ? "each map's region of the texture (its mask) in green; "
                                : in.setup.maps.size() > 1 ? "tile borders in green; "
                                                           : "") +
                               "texel grid when zoomed in)" + sagittas);

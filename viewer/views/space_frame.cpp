@@ -165,7 +165,7 @@ Placement SpaceFrame::placement_from(const glm::dmat4& shape_from_world) const {
 bool unit_space_is_an_atlas(const Inspection& in, Space space) {
     return space == Space::unit && in.has_map() &&
            std::any_of(in.setup.maps.begin(), in.setup.maps.end(),
-                       [](const ShadowMap& m) { return !projection_kind(m).projective(); });
+                       [](const ShadowMap& m) { return !projection_kind(m).projective() || !m.mask.empty(); });
 }
 
 std::optional<SpaceFrame> space_frame(const Inspection& in, Space space, const Step* chosen) {

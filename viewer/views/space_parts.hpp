@@ -25,7 +25,7 @@ struct SpaceFrame {
     glm::dvec3 light{0, 0, 1};        // the light's direction in the space at the region's centre, unit
     glm::dvec3 view{0, 1, 0};         // the camera's view direction carried likewise, unit
     glm::dvec3 light_from, light_to;  // the light arrow, in the space
-    bool atlas = false;  // the atlas of paraboloid maps (unit_space_is_an_atlas): a picture, seen straight on
+    bool atlas = false;  // the atlas of paraboloid or masked maps (unit_space_is_an_atlas): a picture, seen straight on
 
     // The region's middle extent: arrow heads and the axes are sized by it, so that one long axis (a
     // deep light box seen end-on) does not blow them up.
@@ -35,8 +35,9 @@ struct SpaceFrame {
     Placement placement_from(const glm::dmat4& shape_from_world) const;
 };
 
-// Paraboloid maps reach their atlas by no matrix: their unit space is the atlas itself, holding
-// the steps' discs alone; nothing of the world can be carried there.
+// Paraboloid maps reach their atlas by no matrix, and maps sharing one texture in masks (a
+// tetrahedron's faces) by one matrix each over the same square: their unit space is the atlas
+// itself, holding the steps' discs or triangles alone; nothing of the world is carried there.
 bool unit_space_is_an_atlas(const Inspection& in, Space space);
 
 // The frame of the view drawing in `space` (world, light or ppls) showing the chosen step (null: none); nullopt when

@@ -146,8 +146,11 @@ std::string values_text(const Step& step) {
 std::string caption(const Inspection& in, Space space, const SpaceFrame& frame, const ViewOptions& options,
                     size_t chosen) {
     std::string title = space_view_title(space);
+    const bool masked =
+        std::any_of(in.setup.maps.begin(), in.setup.maps.end(), [](const ShadowMap& m) { return !m.mask.empty(); });
     if (frame.atlas)
-        title += " (the atlas: paraboloids reach it by no matrix)";
+        title += masked ? " (the atlas: maps sharing one texture, each in its mask)"
+                        : " (the atlas: paraboloids reach it by no matrix)";
     else if (space == Space::ppls && frame.space == Space::unit)
         title += " (no warp: the map's unit space)";
     title += std::string(" · ") + in.name() + " · " + to_string(options.preset);

@@ -16,6 +16,8 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
+#include "maps/projection_kind.hpp"
+
 namespace shadowlab {
 
 std::string map_name(const ShadowSetup& setup, size_t i) {
@@ -23,7 +25,10 @@ std::string map_name(const ShadowSetup& setup, size_t i) {
     switch (setup.selection.rule) {
         case MapSelection::Rule::view_depth: return "cascade " + std::to_string(i + 1);
         case MapSelection::Rule::hemisphere: return i == 0 ? "front" : "back";
-        case MapSelection::Rule::cube_face: return std::string("face ") + kFaces[setup.maps[i].cube_face % 6];
+        case MapSelection::Rule::face_axis:  // a cube's faces by their axes, others by their index
+            return projection_kind(setup.maps[i]).numbered_face
+                       ? std::string("face ") + kFaces[setup.maps[i].cube_face % 6]
+                       : "face " + std::to_string(i);
         case MapSelection::Rule::pages: {
             const PageAddress& a = setup.selection.pages.pages[i];
             return "level " + std::to_string(a.level) + " page " + std::to_string(a.page.x) + "," +

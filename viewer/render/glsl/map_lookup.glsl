@@ -1,7 +1,7 @@
 // Stage 2, after the projections: select_map, blend_of and texel_of (maps/map_lookup.cpp) line by
 // line; uv_derivative, depth_slope and distance_back_to_depth are the kinds' (map_projection.glsl).
 uniform int shadowMapCount;
-uniform int shadowMapCubeFace[shadowMaxMaps];
+uniform vec3 shadowMapFaceAxis[shadowMaxMaps];  // the face_axis rule's, each map's
 uniform vec4 shadowMapViewport[shadowMaxMaps];    // (u0, v0, u1, v1): the tile in the texture
 uniform vec4 shadowMapTileTexels[shadowMaxMaps];  // first and last texel (x, y, x, y) of the tile
 uniform int shadowSelectionRule;
@@ -22,11 +22,12 @@ float shadowStoredDepth(ivec2 texel) {
 }
 bool shadowInUnitRange(float t) { return t >= 0.0 && t <= 1.0; }  // false for NaN
 bool shadowOnMap(vec4 h) { return h.w > 0.0 && shadowInUnitRange(h.x / h.w) && shadowInUnitRange(h.y / h.w); }
-// 0..5 for +x, -x, +y, -y, +z, -z: the major axis of r (x, then y, on ties) and its sign.
-int shadowMajorAxisFace(vec3 r) {
-  vec3 a = abs(r);
-  int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-  return 2 * axis + (r[axis] < 0.0 ? 1 : 0);
+// The map whose face axis has the largest dot with r, the first on ties (nearest_face).
+int shadowNearestFace(vec3 r) {
+  int best = 0;
+  for (int i = 1; i < shadowMapCount; ++i)
+    if (dot(shadowMapFaceAxis[i], r) > dot(shadowMapFaceAxis[best], r)) best = i;
+  return best;
 }
 float shadowViewDepth(vec3 p) { return dot(p - shadowSelectionEye, shadowSelectionViewAxis); }
 // Map i serves view depths in [split i, split i + 1), the last split included.
@@ -42,14 +43,13 @@ int shadowByViewDepth(vec3 p) {
 // Whether map i holds p under the rules that take the first map holding it.
 bool shadowHolds(int i, vec3 p) {
   if (shadowSelectionRule == shadowRuleTileBounds) return shadowOnMap(shadowHomogeneous(i, p));
-  if (shadowSelectionRule == shadowRuleCubeFace)
-    return shadowMapCubeFace[i] == shadowMajorAxisFace(p - shadowSelectionCentre);
   return shadowSelectionRule == shadowRuleHemisphere && shadowHemisphereSide(i, p) >= 0.0;
 }
 int shadowSelectMap(vec3 p) {
   if (shadowMapCount == 0) return -1;
   if (shadowSelectionRule == shadowRuleOnly) return 0;
   if (shadowSelectionRule == shadowRuleViewDepth) return shadowByViewDepth(p);
+  if (shadowSelectionRule == shadowRuleFaceAxis) return shadowNearestFace(p - shadowSelectionCentre);
   for (int i = 0; i < shadowMapCount; ++i)
     if (shadowHolds(i, p)) return i;
   return -1;
