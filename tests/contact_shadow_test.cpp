@@ -133,3 +133,23 @@ TEST(ContactShadow, RemovesAtLeastHalfTheFalseLightOfALargeNormalOffset) {
     EXPECT_LE(2 * light_after, light_before);
     EXPECT_LT(shadow_after, shadow_before + light_before / 4) << "contact shadows add little false shadow here";
 }
+
+// A surface taken 2 units deep: samples passing behind the box's and the planks' silhouettes are
+// held inside them, false shadow the map alone does not cast. Those pixels are named `contact`,
+// the first cause, and its remedy, a surface half as thick, sets a share of them right.
+TEST(ContactShadow, FalseShadowOfSurfacesTakenTooThickIsNamedContact) {
+    const Scene scene = load_scene(source_path("data/scenes/planks_on_plane.json"));
+    const MeasureContext context = prepare_measurement(scene, 480, 270);
+    const Method& focused = method_or_throw("focused");
+    const Settings settings =
+        resolve_settings("focused", focused.settings, {{"contact_length", "0.5"}, {"contact_thickness", "2"}});
+    const Measurement m = measure(context, focused, settings, 1024, -1.0);
+    const Diagnosis d = diagnose(context, focused, settings, 1024, -1.0, m);
+    ASSERT_FALSE(d.causes.empty());
+    const CauseCount& top = d.causes.front();
+    EXPECT_EQ(top.kind, PixelCause::contact);
+    EXPECT_GT(top.pixels, 100u);
+    ASSERT_TRUE(top.remedy);
+    EXPECT_EQ(top.remedy->change, "contact_thickness 2 → 1");
+    EXPECT_GT(top.remedy->removes, 0.2);
+}
