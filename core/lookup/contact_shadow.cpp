@@ -52,4 +52,11 @@ double contact_visibility(const ContactShadow& contact, const CameraDepthImage& 
     return 1.0;
 }
 
+double with_contact_shadow(double map_visibility, const ContactShadow& contact, const CameraDepthImage& image,
+                           const Light& light, const glm::dvec3& p) {
+    if (map_visibility <= 0.0) return map_visibility;
+    const glm::dvec3 toward_light = light.is_directional() ? -light.direction : glm::normalize(light.position - p);
+    return map_visibility * contact_visibility(contact, image, p, toward_light);
+}
+
 }  // namespace shadowlab

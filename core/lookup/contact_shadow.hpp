@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/camera.hpp"
+#include "scene/light.hpp"
 
 namespace shadowlab {
 
@@ -54,5 +55,11 @@ struct CameraDepthImage {
 // (render/glsl/contact_shadow.glsl).
 double contact_visibility(const ContactShadow& contact, const CameraDepthImage& image, const glm::dvec3& p,
                           const glm::dvec3& toward_light);
+
+// A receiver's visibility under the maps times its contact shadow, marched toward `light` from p;
+// the maps' own where they shadow it already (nothing to march). What every caller that judges
+// the camera's pixels with contact shadows on applies (receiver_visibility, shimmer).
+double with_contact_shadow(double map_visibility, const ContactShadow& contact, const CameraDepthImage& image,
+                           const Light& light, const glm::dvec3& p);
 
 }  // namespace shadowlab

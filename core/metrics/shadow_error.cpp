@@ -163,10 +163,9 @@ std::vector<float> receiver_visibility(const Scene& scene, const ReferenceImage&
                 if (const size_t i = size_t(y) * ref.width + x; receives(scene, ref, i)) {
                     const Receiver r{
                         .position = ref.position[i], .normal = ref.normal[i], .rotation = pixel_rotation(x, y)};
-                    double v = reader.visibility(r, &counts[first]);
-                    if (depths && v > 0.0)
-                        v *= contact_visibility(contact, *depths, r.position, -along_light(scene.light, r.position));
-                    visibility[i] = float(v);
+                    const double v = reader.visibility(r, &counts[first]);
+                    visibility[i] =
+                        float(depths ? with_contact_shadow(v, contact, *depths, scene.light, r.position) : v);
                 }
     });
     if (count)
