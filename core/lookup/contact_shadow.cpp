@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "methods/step_figures.hpp"
+
 namespace shadowlab {
 namespace {
 
@@ -19,6 +21,12 @@ double window_depth_at(const CameraDepthImage& image, const glm::dvec2& at) {
 }
 
 }  // namespace
+
+std::string describe(const ContactShadow& contact) {
+    if (!contact.on()) return "no contact shadows";
+    return "contact shadows over " + label_number(contact.length) + " (" + std::to_string(contact.steps) +
+           " steps, surfaces " + label_number(contact.thickness) + " deep)";
+}
 
 CameraDepthImage::CameraDepthImage(const Camera& camera, int width_, int height_)
     : width(width_),

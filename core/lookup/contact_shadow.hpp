@@ -7,6 +7,7 @@
 // the shadow a map loses where a caster meets its receiver (peter panning under a large normal
 // offset or depth bias) and adds the small shadows finer than a texel; it knows nothing the camera
 // does not see, and takes every surface to be `thickness` deep (thin geometry shadows too much).
+#include <string>
 #include <vector>
 #include <glm/glm.hpp>
 
@@ -27,6 +28,9 @@ struct ContactShadow {
 
     bool on() const { return length > 0.0 && steps > 0; }
 };
+
+// "contact shadows over 0.5 (8 steps, surfaces 0.1 deep)", or "no contact shadows".
+std::string describe(const ContactShadow& contact);
 
 // The camera's depth image: per pixel (row 0 at the top) the window depth of the surface it sees
 // (clip z / w mapped to [0, 1], as OpenGL's depth buffer holds it; 1 where it sees nothing), and the

@@ -12,6 +12,8 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include "render/depth_texture.hpp"
+
 namespace shadowlab {
 namespace {
 
@@ -40,16 +42,8 @@ void ContactDepthImage::prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow* wi
         depth_->GetHeight() == static_cast<unsigned>(size[1]))
         return;
     release(window);
-    depth_ = vtkSmartPointer<vtkTextureObject>::New();
-    depth_->SetContext(window);
-    depth_->SetMinificationFilter(vtkTextureObject::Nearest);
-    depth_->SetMagnificationFilter(vtkTextureObject::Nearest);
-    depth_->SetWrapS(vtkTextureObject::ClampToEdge);
-    depth_->SetWrapT(vtkTextureObject::ClampToEdge);
-    depth_->AllocateDepth(size[0], size[1], vtkTextureObject::Float32);
-    colour_ = vtkSmartPointer<vtkTextureObject>::New();  // unused, but keeps the FBO complete everywhere
-    colour_->SetContext(window);
-    colour_->Allocate2D(size[0], size[1], 4, VTK_UNSIGNED_CHAR);
+    depth_ = depth_texture(window, size[0], size[1], vtkTextureObject::Float32);
+    colour_ = completing_colour_texture(window, size[0], size[1]);
     fbo_ = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     fbo_->SetContext(window);
 }

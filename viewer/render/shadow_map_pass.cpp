@@ -29,6 +29,7 @@
 #include "maps/map_lookup.hpp"
 #include "maps/projection_kind.hpp"
 #include "raster/paraboloid_edges.hpp"
+#include "render/depth_texture.hpp"
 #include "render/glsl_source.hpp"
 #include "render/projection_glsl.hpp"
 #include "render/program_uniforms.hpp"
@@ -494,17 +495,9 @@ void ShadowMapPass::prepare_targets(vtkOpenGLRenderWindow* window) {
         allocated_encoding_ == lookup_.format.encoding)
         return;
     ReleaseGraphicsResources(window);
-    depth_ = vtkSmartPointer<vtkTextureObject>::New();
-    depth_->SetContext(window);
-    depth_->SetMinificationFilter(vtkTextureObject::Nearest);
-    depth_->SetMagnificationFilter(vtkTextureObject::Nearest);
-    depth_->SetWrapS(vtkTextureObject::ClampToEdge);
-    depth_->SetWrapT(vtkTextureObject::ClampToEdge);
-    depth_->AllocateDepth(resolution_, resolution_, texture_format(lookup_.format.encoding));
+    depth_ = depth_texture(window, resolution_, resolution_, texture_format(lookup_.format.encoding));
     allocated_encoding_ = lookup_.format.encoding;
-    colour_ = vtkSmartPointer<vtkTextureObject>::New();  // unused, but keeps the FBO complete everywhere
-    colour_->SetContext(window);
-    colour_->Allocate2D(resolution_, resolution_, 4, VTK_UNSIGNED_CHAR);
+    colour_ = completing_colour_texture(window, resolution_, resolution_);
     fbo_ = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     fbo_->SetContext(window);
 }
