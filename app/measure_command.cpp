@@ -52,7 +52,11 @@ Json to_json(const ShadowLookup& l) {
              {{"constant", l.bias.constant},
               {"slope_scale", l.bias.slope_scale},
               {"normal_offset_texels", l.bias.normal_offset},
-              {"receiver_plane", l.bias.receiver_plane}}}};
+              {"receiver_plane", l.bias.receiver_plane}}},
+            {"contact",  // null: off
+             l.contact.on()
+                 ? Json{{"length", l.contact.length}, {"steps", l.contact.steps}, {"thickness", l.contact.thickness}}
+                 : Json(nullptr)}};
 }
 
 }  // namespace
@@ -166,7 +170,7 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
         std::cout << "  lookup: filter " << m.lookup.filter.kind << ", " << m.taps_per_pixel << " taps per pixel, "
                   << m.lookup_ms << " ms for " << e.receiver_pixels << " pixels"
                   << (m.prefilter_ms > 0.0 ? ", moments blurred in " + std::to_string(m.prefilter_ms) + " ms" : "")
-                  << "\n";
+                  << (m.lookup.contact.on() ? "; " + describe(m.lookup.contact) : "") << "\n";
     if (m.texels_used > 0.0)
         std::cout << "  texels: " << m.texels_used << " in the maps' tiles, of " << double(m.resolution) * m.resolution
                   << " in the texture\n";

@@ -55,7 +55,7 @@ const std::vector<std::map<std::string, std::string>> kCascadeVariants{{{"stabil
                                                                        {{"bounds", "visible"}, {"lambda", "1"}}};
 
 // The lookups: each filter and the biases that read the map's derivatives, on the focused map (and
-// PCF on a warp); a world-length kernel scales with the scene.
+// PCF on a warp); a world-length kernel scales with the scene, and so do contact shadows' lengths.
 std::vector<std::pair<std::string, std::map<std::string, std::string>>> lookup_variants(double scale) {
     return {{"focused", {{"filter", "pcf"}, {"pcf_kernel", "poisson"}, {"kernel_size", "4"}, {"filter_radius", "1.5"}}},
             {"lispsm", {{"filter", "pcf"}, {"pcf_kernel", "tent"}}},
@@ -65,7 +65,11 @@ std::vector<std::pair<std::string, std::map<std::string, std::string>>> lookup_v
             {"focused", {{"filter", "msm"}, {"msm_quantization", "unorm16"}}},
             {"focused", {{"filter", "esm"}}},
             {"focused", {{"filter", "pcss"}}},
-            {"focused", {{"bias_slope", "0"}, {"bias_normal", "1"}, {"bias_receiver_plane", "on"}}}};
+            {"focused", {{"bias_slope", "0"}, {"bias_normal", "1"}, {"bias_receiver_plane", "on"}}},
+            {"focused",
+             {{"bias_normal", "8"},
+              {"contact_length", std::to_string(0.5 * scale)},
+              {"contact_thickness", std::to_string(0.1 * scale)}}}};
 }
 
 struct Verdicts {

@@ -28,6 +28,31 @@ SettingSpec depth_format_setting() {
     return spec;
 }
 
+// The contact shadow's settings (lookup/contact_shadow.hpp): lengths in world units, which scale
+// with the scene.
+std::vector<SettingSpec> contact_shadow_settings() {
+    const ContactShadow defaults;
+    return {{.name = "contact_length",
+             .description = "contact shadows: how far the march through the camera's depth image reaches toward the "
+                            "light, world units (0: off)",
+             .default_value = "0",
+             .min = 0,
+             .max = 1e30,
+             .length_power = 1},
+            {.name = "contact_steps",
+             .description = "contact shadows: the samples along the march",
+             .default_value = std::to_string(defaults.steps),
+             .min = 1,
+             .max = kMaxContactSteps},
+            {.name = "contact_thickness",
+             .description = "contact shadows: how deep a surface of the depth image is taken to be, world units (a "
+                            "sample less than this behind it is occluded)",
+             .default_value = "0.1",
+             .min = 0,
+             .max = 1e30,
+             .length_power = 1}};
+}
+
 }  // namespace
 
 SettingSpec kernel_size_setting() {
@@ -99,6 +124,8 @@ std::vector<SettingSpec> lookup_settings() {
                                     "finest toward the far end",
                      .default_value = "off",
                      .choices = {"off", "on"}});
+    const std::vector<SettingSpec> contact = contact_shadow_settings();
+    specs.insert(specs.end(), contact.begin(), contact.end());
     return specs;
 }
 
@@ -149,10 +176,16 @@ ShadowLookup lookup_from(const Settings& s, double constant_bias) {
                                  .normal_offset = s.number("bias_normal"),
                                  .receiver_plane = s.choice("bias_receiver_plane") == "on"},
                         .format = {.encoding = enum_named(s.choice("depth_format"), depth_encodings()),
-                                   .reversed = s.choice("depth_reversed") == "on"}};
+                                   .reversed = s.choice("depth_reversed") == "on"},
+                        .contact = {.length = s.number("contact_length"),
+                                    .steps = int(s.number("contact_steps")),
+                                    .thickness = s.number("contact_thickness")}};
     if (double(lookup.filter.kernel_size) != s.number("kernel_size"))
         throw std::invalid_argument("setting kernel_size=" + std::to_string(s.number("kernel_size")) +
                                     ": expected a whole number of taps");
+    if (double(lookup.contact.steps) != s.number("contact_steps"))
+        throw std::invalid_argument("setting contact_steps=" + std::to_string(s.number("contact_steps")) +
+                                    ": expected a whole number of samples");
     if (lookup.filter.reads_moments() && lookup.filter.radius_world > 0.0)
         throw std::invalid_argument("setting filter_world_radius: filter=" + lookup.filter.kind +
                                     " blurs its moments once per map, in texels (kernel_size); set it to 0");

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lookup/contact_shadow.hpp"
 #include "lookup/depth_bias.hpp"
 #include "lookup/shadow_filter.hpp"
 #include "methods/settings.hpp"
@@ -18,10 +19,13 @@ struct ShadowLookup {
     ShadowFilter filter;
     DepthBias bias;
     DepthFormat format;  // how the maps store their depth: every raster for this lookup draws in it
+    ContactShadow
+        contact;  // the march in the camera's depth image that multiplies the maps' visibility; off by default
 };
 
 // Every filter's settings (the filter, then each filter's own, in the filters' order), the depth
-// bias's and the depth format's (depth_format, depth_reversed). A filter registered later adds its own.
+// bias's, the depth format's (depth_format, depth_reversed) and the contact shadow's (contact_length,
+// contact_steps, contact_thickness). A filter registered later adds its own.
 std::vector<SettingSpec> lookup_settings();
 
 // Whether `name` is one of lookup_settings(), and of those, the filters that read a filter setting

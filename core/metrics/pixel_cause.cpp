@@ -118,6 +118,12 @@ std::optional<Remedy> hard_read(const RemedyInputs& in) {
     return changed(in, "filter", std::string("hard"), in.settings.choice("filter"));
 }
 
+// Contact shadows darkening a point the map lights: a surface half as thick.
+std::optional<Remedy> thinner_contact(const RemedyInputs& in) {
+    const double thickness = in.settings.number("contact_thickness");
+    return changed(in, "contact_thickness", thickness / 2, number(thickness));
+}
+
 bool within_one_step(const PixelEvidence& e) { return std::abs(e.gap) <= e.step; }
 
 const std::vector<CauseInfo> kCauses{
@@ -127,6 +133,13 @@ const std::vector<CauseInfo> kCauses{
      {140, 140, 140},
      [](const PixelEvidence& e) { return e.technique; },
      nullptr},
+    {PixelCause::contact,
+     "contact",
+     "false shadow the contact shadows add: the map lights the point, but the march toward the light passes behind "
+     "a surface of the depth image taken to be contact_thickness deep (thin geometry, a ray passing behind an edge)",
+     {170, 255, 195},
+     [](const PixelEvidence& e) { return e.contact_darkened; },
+     thinner_contact},
     {PixelCause::outside_map,
      "outside_map",
      "the point reads no map (off every tile, behind the near plane or past the far one), or no occluder at all "

@@ -20,6 +20,7 @@ struct PixelEvidence;
 enum class PixelCause : uint8_t {
     none,  // not misclassified, or not judged
     technique,
+    contact,
     outside_map,
     filter,
     seam,

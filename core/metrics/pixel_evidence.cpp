@@ -35,6 +35,8 @@ public:
         const size_t i = size_t(y) * ref_.width + x;
         const Receiver r{.position = ref_.position[i], .normal = ref_.normal[i], .rotation = pixel_rotation(x, y)};
         PixelEvidence e{.false_shadow = error_.verdicts[i] == PixelVerdict::false_shadow};
+        e.contact_darkened = e.false_shadow && reader_.lookup().contact.on() && reader_.visibility(r) >= 0.5;
+        if (e.contact_darkened) return e;
         const MapBlend blend = blend_of(reader_.setup(), r.position);
         const std::optional<TexelRead> read = blend.map < 0 ? std::nullopt : hard_.read_texel(blend.map, r);
         if (!read || !within_depth_range(blend.map, r.position)) {

@@ -11,15 +11,16 @@
 namespace shadowlab {
 
 struct PixelEvidence {
-    bool false_shadow = false;  // the map shadows a lit point; else it lights a shadowed one
-    bool technique = false;     // a geometric technique judged it: no map was read
-    bool reads_map = true;      // the selected map covers the (biased) point, within its depth range
-    bool filtered = false;      // the run's filter is soft (not the hard one-texel read) ...
-    bool hard_right = false;    // ... and the hard read with the same biases gets the pixel right
-    bool seam = false;          // a blend band whose two maps' hard reads disagree, or within kSeamPixels of
-                                // the pixels of a map after this one (the next cascade) that reads it right
-    double gap = 0.0;           // the hard read's receiver − stored depth: > 0 shadowed
-    double step = 0.0;          // the stored depth's quantization step in the map's depth format
+    bool false_shadow = false;      // the map shadows a lit point; else it lights a shadowed one
+    bool technique = false;         // a geometric technique judged it: no map was read
+    bool contact_darkened = false;  // false shadow the map alone lights: the contact shadows made it
+    bool reads_map = true;          // the selected map covers the (biased) point, within its depth range
+    bool filtered = false;          // the run's filter is soft (not the hard one-texel read) ...
+    bool hard_right = false;        // ... and the hard read with the same biases gets the pixel right
+    bool seam = false;              // a blend band whose two maps' hard reads disagree, or within kSeamPixels of
+                                    // the pixels of a map after this one (the next cascade) that reads it right
+    double gap = 0.0;               // the hard read's receiver − stored depth: > 0 shadowed
+    double step = 0.0;              // the stored depth's quantization step in the map's depth format
     // The stored depth is no nearer the light than the receiver's own plane at the texel's centre
     // (within a quarter of the plane's depth change across a texel): the texel holds the receiver.
     bool own_surface = false;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "lookup/depth_bias.hpp"
 #include "math/parallel_rows.hpp"
 #include "math/singular_values.hpp"
 #include "metrics/pixel_evidence.hpp"
+#include "reference/camera_depth_image.hpp"
 
 namespace shadowlab {
 
@@ -152,13 +154,19 @@ std::vector<float> receiver_visibility(const Scene& scene, const ReferenceImage&
                                        LookupCount* count) {
     std::vector<float> visibility(ref.visible.size(), -1.0f);
     std::vector<LookupCount> counts(row_threads());  // one per thread
+    const ContactShadow& contact = reader.lookup().contact;
+    const std::optional<CameraDepthImage> depths =
+        contact.on() ? std::optional(camera_depth_image(scene.camera, ref)) : std::nullopt;
     parallel_rows([&](int first, int stride) {
         for (int y = first; y < ref.height; y += stride)
             for (int x = 0; x < ref.width; ++x)
-                if (const size_t i = size_t(y) * ref.width + x; receives(scene, ref, i))
-                    visibility[i] = float(reader.visibility(
-                        {.position = ref.position[i], .normal = ref.normal[i], .rotation = pixel_rotation(x, y)},
-                        &counts[first]));
+                if (const size_t i = size_t(y) * ref.width + x; receives(scene, ref, i)) {
+                    const Receiver r{
+                        .position = ref.position[i], .normal = ref.normal[i], .rotation = pixel_rotation(x, y)};
+                    const double v = reader.visibility(r, &counts[first]);
+                    visibility[i] =
+                        float(depths ? with_contact_shadow(v, contact, *depths, scene.light, r.position) : v);
+                }
     });
     if (count)
         for (const LookupCount& c : counts) {

@@ -58,7 +58,9 @@ struct ShadowError {
 };
 
 // The visibility of every receiver pixel under the reader's maps (-1 elsewhere): the lookups,
-// alone, so that their cost can be timed; `count` sums their taps.
+// alone, so that their cost can be timed; `count` sums their taps. With the lookup's contact shadows
+// on, each pixel's visibility is multiplied by its march through the reference's depth image
+// (lookup/contact_shadow.hpp); off, no depth image is made.
 std::vector<float> receiver_visibility(const Scene& scene, const ReferenceImage& reference, const ShadowReader& reader,
                                        LookupCount* count = nullptr);
 

@@ -6,6 +6,7 @@
 #include "math/parallel_rows.hpp"
 #include "lookup/shadow_reader.hpp"
 #include "raster/depth_map.hpp"
+#include "reference/camera_depth_image.hpp"
 #include "reference/visible_depths.hpp"
 
 namespace shadowlab {
@@ -22,14 +23,16 @@ constexpr signed char kNotJudged = -1;
 // Each sample's verdict under the frame's maps: 1 in shadow (visibility below one half), 0 lit,
 // kNotJudged outside the view.
 std::vector<signed char> verdicts(const std::vector<ShimmerSample>& samples, const Camera& camera,
-                                  const ShadowReader& reader) {
+                                  const ShadowReader& reader, const std::optional<CameraDepthImage>& depths) {
     const glm::dmat4 clip_from_world = camera.projection_matrix() * camera.view_matrix();
     std::vector<signed char> out(samples.size(), kNotJudged);
     parallel_rows([&](int first, int stride) {
         for (size_t i = first; i < samples.size(); i += stride) {
             const ShimmerSample& s = samples[i];
             if (!in_view(clip_from_world, s.position)) continue;
-            out[i] = reader.visibility({.position = s.position, .normal = s.normal}) < 0.5;
+            const double v = reader.visibility({.position = s.position, .normal = s.normal});
+            const ContactShadow& contact = reader.lookup().contact;
+            out[i] = (depths ? with_contact_shadow(v, contact, *depths, reader.light(), s.position) : v) < 0.5;
         }
     });
     return out;
@@ -47,6 +50,17 @@ ShadowInputs frame_inputs(const MeasureContext& c, const Method& method, const S
         trace_depth_image(inputs, seen_from_frame, c.triangles, c.reference.width, c.reference.height);
     }
     return inputs;
+}
+
+// Contact shadows march in the frame's own depth image (what the camera sees from there), traced
+// at the reference's size; none when they are off.
+std::optional<CameraDepthImage> frame_depth_image(const MeasureContext& c, const ShadowLookup& lookup,
+                                                  const Camera& camera) {
+    if (!lookup.contact.on()) return std::nullopt;
+    Scene seen_from_frame = c.scene;
+    seen_from_frame.camera = camera;
+    return camera_depth_image(camera,
+                              visible_points(seen_from_frame, c.triangles, c.reference.width, c.reference.height));
 }
 
 }  // namespace
@@ -103,7 +117,7 @@ Shimmer measure_shimmer(const MeasureContext& c, const std::vector<ShimmerSample
             method.compute_maps(frame_inputs(c, method, settings, camera, resolution), settings, nullptr);
         const DepthMap depth = rasterize_depth(c.triangles, c.casters, setup, resolution, lookup.format);
         const ShadowReader reader(setup, depth, c.scene.light, lookup);
-        const std::vector<signed char> now = verdicts(samples, camera, reader);
+        const std::vector<signed char> now = verdicts(samples, camera, reader, frame_depth_image(c, lookup, camera));
         const PageTurnover pages = page_turnover(previous ? &*previous : nullptr, setup);
         FrameShimmer f{.frame = frame,
                        .fallbacks = setup.fallbacks,

@@ -50,7 +50,8 @@ struct Shimmer {
 
 // Follows `path` from the context's camera, building the method's maps at `resolution` for every
 // frame and judging `samples` as the settings' filter and bias say (a constant `bias` >= 0 replaces
-// the bias settings, as measure does). Throws std::invalid_argument for a geometric technique: it has no map.
+// the bias settings, as measure does; contact shadows march in each frame's own depth image, traced
+// at the reference's size). Throws std::invalid_argument for a geometric technique: it has no map.
 Shimmer measure_shimmer(const MeasureContext& context, const std::vector<ShimmerSample>& samples, const Method& method,
                         const Settings& settings, int resolution, double bias, const CameraPath& path);
 

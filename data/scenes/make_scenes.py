@@ -225,6 +225,19 @@ def box_on_plane(rng):
                                      "size": [2, 2, 2]}]}
 
 
+def planks_on_plane(rng):
+    return {"name": "planks_on_plane",
+            "description": "A box and low planks on a plane, a low sun behind them: shadows a large normal offset "
+                           "lifts off their casters (contact shadows restore them).",
+            "camera": camera((0, 4, 8), (0, -0.35, -1), near=0.1, far=50),
+            "light": {"type": "directional", "direction": travelling(25, 30)},
+            "objects": [ground(20),
+                        {"type": "box", "name": "box", "position": [0, 1, 0], "size": [2, 2, 2]},
+                        {"type": "box", "name": "plank", "position": [-3, 0.1, 1], "size": [2, 0.2, 0.5]},
+                        {"type": "box", "name": "slab", "position": [3, 0.15, 0.5], "size": [1.5, 0.3, 1]},
+                        {"type": "box", "name": "curb", "position": [0, 0.1, 3], "size": [8, 0.2, 0.3]}]}
+
+
 def few_objects(rng):
     objects = [house(rng, -6, -4), tower(rng, 6, -6, 8, 12), tank(rng, 5, 5)] + tree(rng, -5, 6)
     return objects + [{"type": "sphere", "name": "ball", "position": [0, 1, 0], "radius": 1}]
@@ -331,7 +344,7 @@ def soft_shadows(rng):
 
 SCENES = [default, light_parallel_behind, light_parallel_front, casters_behind, light_overhead,
           far_near_1e5, box_on_plane, spot, point, volumes, volumes_eye_in_shadow, lamp_room,
-          grazing_sun, sun_disc, soft_shadows, overhead_view]
+          grazing_sun, sun_disc, soft_shadows, overhead_view, planks_on_plane]
 
 
 def seed_of(make):

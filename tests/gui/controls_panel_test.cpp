@@ -23,7 +23,8 @@ namespace {
 const QStringList kPcfSettings{"pcf_kernel", "kernel_size", "filter_radius", "filter_world_radius"};
 const QStringList kMomentSettings{"min_variance", "bleed_reduction"};
 const QStringList kEvsmSettings{"evsm_positive", "evsm_negative"};
-const QStringList kBiasSettings{"bias_constant", "bias_slope", "bias_normal", "bias_receiver_plane"};
+const QStringList kBiasSettings{"bias_constant",  "bias_slope",    "bias_normal",      "bias_receiver_plane",
+                                "contact_length", "contact_steps", "contact_thickness"};
 
 }  // namespace
 

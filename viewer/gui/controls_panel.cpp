@@ -47,7 +47,7 @@ QWidget* setting_editor(const SettingSpec& spec, QWidget* parent) {
 }
 
 // Where the form lists a setting: among the method's own, or in the lookup's Filter group or the
-// group every filter reads (the depth biases and the depth format).
+// group every filter reads (the depth biases, the depth format and contact shadows).
 enum class SettingGroup { own, filter, bias };
 
 SettingGroup group_of(const std::string& name) {
@@ -56,7 +56,8 @@ SettingGroup group_of(const std::string& name) {
 }
 
 QLabel* group_header(SettingGroup group, QWidget* parent) {
-    auto* header = new QLabel(group == SettingGroup::filter ? "Filter" : "Depth bias and format", parent);
+    auto* header =
+        new QLabel(group == SettingGroup::filter ? "Filter" : "Depth bias, format and contact shadows", parent);
     header->setObjectName(group == SettingGroup::filter ? "filterSettings" : "biasSettings");
     QFont bold = header->font();
     bold.setBold(true);

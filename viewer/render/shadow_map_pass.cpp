@@ -29,6 +29,7 @@
 #include "maps/map_lookup.hpp"
 #include "maps/projection_kind.hpp"
 #include "raster/paraboloid_edges.hpp"
+#include "render/depth_texture.hpp"
 #include "render/glsl_source.hpp"
 #include "render/projection_glsl.hpp"
 #include "render/program_uniforms.hpp"
@@ -380,6 +381,7 @@ struct Stage2Switches {
     int filter;  // the filter's index (filter_index), which shadowMapVisibility dispatches on
     bool receiver_plane;
     MapOverlay overlay;
+    bool contact;  // contact shadows: always compiled in, so that off no program marches or reads their image
 
     bool compiled_in() const { return filter == kDefaultFilter && !receiver_plane && overlay == MapOverlay::none; }
     std::string declarations() const {
@@ -387,7 +389,7 @@ struct Stage2Switches {
             return compiled_in() ? glsl_int_constant(name, value) : "uniform int " + std::string(name) + ";\n";
         };
         return declared("shadowFilterKind", filter) + declared("shadowBiasReceiverPlane", receiver_plane) +
-               declared("shadowOverlay", static_cast<int>(overlay));
+               declared("shadowOverlay", static_cast<int>(overlay)) + glsl_int_constant("shadowContactOn", contact);
     }
     bool set(ProgramUniforms& program) const {
         return compiled_in() || all_set(program.SetUniformi("shadowFilterKind", filter),
@@ -399,7 +401,8 @@ struct Stage2Switches {
 Stage2Switches stage2_switches(const ShadowLookup& lookup, ShadowMapPass::Output output, MapOverlay overlay) {
     return {.filter = filter_index(filter_of(lookup.filter)),
             .receiver_plane = lookup.bias.receiver_plane,
-            .overlay = output == ShadowMapPass::Output::shaded ? overlay : MapOverlay::none};
+            .overlay = output == ShadowMapPass::Output::shaded ? overlay : MapOverlay::none,
+            .contact = lookup.contact.on()};
 }
 
 }  // namespace
@@ -493,6 +496,12 @@ void ShadowMapPass::Render(const vtkRenderState* s) {
     prepare_targets(window);
     if (paged()) prepare_page_textures(window);
     render_depth(s, window);
+    if (lookup_.contact.on())
+        render_camera_depth(s, window);
+    else if (contact_image_) {  // turned off: nothing kept
+        contact_image_->release(window);
+        contact_image_.reset();
+    }
     render_shaded(s);
 }
 
@@ -501,17 +510,9 @@ void ShadowMapPass::prepare_targets(vtkOpenGLRenderWindow* window) {
         allocated_encoding_ == lookup_.format.encoding)
         return;
     ReleaseGraphicsResources(window);
-    depth_ = vtkSmartPointer<vtkTextureObject>::New();
-    depth_->SetContext(window);
-    depth_->SetMinificationFilter(vtkTextureObject::Nearest);
-    depth_->SetMagnificationFilter(vtkTextureObject::Nearest);
-    depth_->SetWrapS(vtkTextureObject::ClampToEdge);
-    depth_->SetWrapT(vtkTextureObject::ClampToEdge);
-    depth_->AllocateDepth(resolution_, resolution_, texture_format(lookup_.format.encoding));
+    depth_ = depth_texture(window, resolution_, resolution_, texture_format(lookup_.format.encoding));
     allocated_encoding_ = lookup_.format.encoding;
-    colour_ = vtkSmartPointer<vtkTextureObject>::New();  // unused, but keeps the FBO complete everywhere
-    colour_->SetContext(window);
-    colour_->Allocate2D(resolution_, resolution_, 4, VTK_UNSIGNED_CHAR);
+    colour_ = completing_colour_texture(window, resolution_, resolution_);
     fbo_ = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     fbo_->SetContext(window);
 }
@@ -622,6 +623,23 @@ void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenG
     for (int k = 0; k < mask_edges; ++k) glDisable(GL_CLIP_DISTANCE1 + k);
 }
 
+// Contact shadows: the renderer's opaque props from its camera, VTK's shaders unchanged, into the
+// camera's depth image that stage 2 marches in.
+void ShadowMapPass::render_camera_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
+    if (!contact_image_) contact_image_.emplace();
+    contact_image_->prepare(s->GetRenderer(), window);
+    vtkOpenGLState* gl = window->GetState();
+    contact_image_->begin_drawing(gl);
+    enter(Stage::camera_depth);
+    vtkRenderState camera_state(s->GetRenderer());
+    camera_state.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+    camera_state.SetFrameBuffer(contact_image_->framebuffer());
+    PreRender(&camera_state);
+    depth_pass_->Render(&camera_state);
+    PostRender(&camera_state);
+    contact_image_->end_drawing(gl);
+}
+
 // Stage 2: the scene, each fragment looked up in its map.
 void ShadowMapPass::render_shaded(const vtkRenderState* s) {
     if (!shade_) return;
@@ -633,10 +651,12 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
         page_table_->Activate();
         page_slots_->Activate();
     }
+    if (contact_image_) contact_image_->activate();
     PreRender(s);
     shade_->Render(s);
     NumberOfRenderedProps = shade_->GetNumberOfRenderedProps();
     PostRender(s);
+    if (contact_image_) contact_image_->deactivate();
     if (paged()) {
         page_slots_->Deactivate();
         page_table_->Deactivate();
@@ -646,6 +666,7 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
 
 bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment, vtkAbstractMapper*,
                                            vtkProp*) {
+    if (stage_ == Stage::camera_depth) return true;  // VTK's own depth, as stage 2 rasterizes it
     const std::string projection = glsl_constants() + glsl("map_projection") + projection_glsl();
     if (stage_ == Stage::depth) {
         vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
@@ -653,10 +674,10 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
         return true;
     }
     pass_world_position(vertex);
-    std::string declarations =
-        projection + stage2_switches(lookup_, output_, overlay_).declarations() +
-        glsl("map_lookup", "depth_bias", "hash", "kernel_taps", "shadow_reader", "chebyshev", "moment_map") +
-        filters_glsl();
+    std::string declarations = projection + stage2_switches(lookup_, output_, overlay_).declarations() +
+                               glsl("map_lookup", "depth_bias", "hash", "kernel_taps", "shadow_reader", "chebyshev",
+                                    "moment_map", "contact_shadow") +
+                               filters_glsl();
     std::string overlay = glsl("map_overlay");
     std::string lookup = glsl("shadow_lookup");
     if (paged()) {  // a program of its own: the per-map arrays filled by the page selection
@@ -682,6 +703,7 @@ bool ShadowMapPass::PostReplaceShaderValues(std::string& vertex, std::string&, s
 
 bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbstractMapper*, vtkProp*,
                                         vtkOpenGLVertexArrayObject*) {
+    if (stage_ == Stage::camera_depth) return true;
     ProgramUniforms program(shader_program);
     const DepthFormat& format = lookup_.format;
     if (stage_ == Stage::depth) {
@@ -712,7 +734,8 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbs
                    set_surface_shading_uniforms(shader_program, frame_, unlit), set_overlay_uniforms(program, ramp_),
                    stage2_switches(lookup_, output_, overlay_).set(program),
                    !paged() || set_page_uniforms(program, setup_.selection.pages, page_table_->GetTextureUnit(),
-                                                 page_slots_->GetTextureUnit()));
+                                                 page_slots_->GetTextureUnit()),
+                   !contact_image_ || contact_image_->set_uniforms(program, lookup_.contact));
 }
 
 void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {
@@ -725,6 +748,8 @@ void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {
     if (colour_) colour_->ReleaseGraphicsResources(w);
     if (page_table_) page_table_->ReleaseGraphicsResources(w);
     if (page_slots_) page_slots_->ReleaseGraphicsResources(w);
+    if (contact_image_) contact_image_->release(w);
+    contact_image_.reset();
     fbo_ = nullptr;
     depth_ = colour_ = page_table_ = page_slots_ = nullptr;
     page_textures_current_ = false;

@@ -21,9 +21,12 @@
 // alone, read exactly after the division by w whatever the map's perspective; then the filter: hard,
 // pcf, pcss (blocker search, penumbra, PCF) over the CPU's own tap lists, or vsm/evsm on the
 // box-blurred moments, which the fragment shader sums from the depth texture itself. Inside a blend
-// band (blend_of) the two maps' visibilities are crossfaded. The shading mixes by 1 − visibility (soft
-// shadows shade by themselves), the lit mask thresholds the visibility at one half, as the CPU's
+// band (blend_of) the two maps' visibilities are crossfaded. With the lookup's contact shadows on, a
+// pass before stage 2 draws the camera's depth image (render/contact_depth_image.hpp) and the
+// visibility is multiplied by the march through it, as receiver_visibility multiplies. The shading mixes by 1 −
+// visibility (soft shadows shade by themselves), the lit mask thresholds the visibility at one half, as the CPU's
 // verdicts do. An overlay (render/map_overlay.hpp) may tint the result.
+#include <optional>
 #include <vector>
 #include <glm/glm.hpp>
 #include <vtkOpenGLRenderPass.h>
@@ -31,6 +34,7 @@
 
 #include "lookup/lookup_settings.hpp"
 #include "maps/shadow_map.hpp"
+#include "render/contact_depth_image.hpp"
 #include "render/map_overlay.hpp"
 #include "render/surface_shading.hpp"
 #include "scene/light.hpp"
@@ -99,11 +103,12 @@ protected:
     ~ShadowMapPass() override;
 
 private:
-    enum class Stage { depth, shade };
+    enum class Stage { depth, camera_depth, shade };  // camera_depth: VTK's own shaders, for contact shadows
     void enter(Stage stage);
     void prepare_targets(vtkOpenGLRenderWindow* window);
     void render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
     void render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map);
+    void render_camera_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
     void render_shaded(const vtkRenderState* s);
     void split_casters_per_map();
     void prepare_page_textures(vtkOpenGLRenderWindow* window);
@@ -136,6 +141,7 @@ private:
     // slot (GL_RGBA32F, maps x 2), uploaded once per setup.
     vtkSmartPointer<vtkTextureObject> page_table_, page_slots_;
     bool page_textures_current_ = false;
+    std::optional<ContactDepthImage> contact_image_;  // while the lookup's contact shadows are on
 };
 
 }  // namespace shadowlab
