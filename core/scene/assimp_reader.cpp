@@ -93,6 +93,18 @@ void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& wor
         by_position[key].push_back(index);
         return welded_of_file[file_vertex] = index;
     };
+    const aiVector3D* file_uvs = mesh.mNumVertices > 0 ? mesh.mTextureCoords[0] : nullptr;
+    if (file_uvs) out.surfaces.resize(out.triangles.size());  // the meshes before it had none
+    // The triangle's surface, kept parallel to the triangles once any mesh gave texture coordinates.
+    const auto add_surface = [&](const std::array<unsigned, 3>& file_corners) {
+        if (!file_uvs) {
+            if (!out.surfaces.empty()) out.surfaces.emplace_back();
+            return;
+        }
+        TriangleSurface surface{.material = static_cast<int>(mesh.mMaterialIndex), .uv = {}};
+        for (int k = 0; k < 3; ++k) surface.uv[k] = {file_uvs[file_corners[k]].x, file_uvs[file_corners[k]].y};
+        out.surfaces.push_back(surface);
+    };
     std::vector<int> corners;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         const aiFace& face = mesh.mFaces[f];
@@ -106,10 +118,18 @@ void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& wor
         }
         corners.clear();
         for (unsigned c : file_corners) corners.push_back(welded(c));
-        if (corners.size() == 3)
+        if (corners.size() == 3) {
             out.triangles.push_back({corners[0], corners[1], corners[2]});
-        else
-            for (const std::array<int, 3>& t : triangulate_polygon(out.vertices, corners)) out.triangles.push_back(t);
+            add_surface({file_corners[0], file_corners[1], file_corners[2]});
+            continue;
+        }
+        for (const std::array<int, 3>& t : triangulate_polygon(out.vertices, corners)) {
+            out.triangles.push_back(t);
+            std::array<unsigned, 3> of_file{};  // each welded corner's first place in the face
+            for (int k = 0; k < 3; ++k)
+                of_file[k] = file_corners[std::find(corners.begin(), corners.end(), t[k]) - corners.begin()];
+            add_surface(of_file);
+        }
     }
 }
 

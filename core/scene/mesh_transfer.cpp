@@ -65,6 +65,11 @@ private:
     std::size_t at_ = 0;
 };
 
+// The surfaces are none or one per triangle.
+bool surfaces_parallel(const TriangleMesh& mesh) {
+    return mesh.surfaces.empty() || mesh.surfaces.size() == mesh.triangles.size();
+}
+
 bool indices_in_range(const TriangleMesh& mesh) {
     const auto count = static_cast<long long>(mesh.vertices.size());
     for (const std::array<int, 3>& t : mesh.triangles)
@@ -82,6 +87,7 @@ std::string encode_node_meshes(const std::vector<NodeMesh>& nodes) {
         out.put_text(node.node_name);
         out.put_all(node.mesh.vertices);
         out.put_all(node.mesh.triangles);
+        out.put_all(node.mesh.surfaces);
         out.put<std::uint64_t>(node.mesh.broken_faces_dropped);
     }
     return out.take();
@@ -96,7 +102,8 @@ std::optional<std::vector<NodeMesh>> decode_node_meshes(const std::string& bytes
         NodeMesh node;
         std::uint64_t broken = 0;
         if (!in.get_text(node.node_name) || !in.get_all(node.mesh.vertices) || !in.get_all(node.mesh.triangles) ||
-            !in.get(broken) || !indices_in_range(node.mesh))
+            !in.get_all(node.mesh.surfaces) || !in.get(broken) || !indices_in_range(node.mesh) ||
+            !surfaces_parallel(node.mesh))
             return std::nullopt;
         node.mesh.broken_faces_dropped = broken;
         nodes.push_back(std::move(node));

@@ -328,6 +328,7 @@ private:
 // The scene, what the glTF file lacks said on stderr.
 Scene told(GltfScene gltf, const std::string& gltf_file) {
     for (const std::string& assumed : gltf.defaulted) std::clog << gltf_file << ": " << assumed << "\n";
+    for (const Note& note : gltf.scene.notes) std::clog << gltf_file << ": " << describe(note) << "\n";
     return std::move(gltf.scene);
 }
 

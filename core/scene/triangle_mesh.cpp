@@ -32,8 +32,16 @@ bool degenerate(const TriangleMesh& mesh, const std::array<int, 3>& t) {
 
 void drop_degenerate(TriangleMesh& mesh) {
     const std::size_t before = mesh.triangles.size();
-    std::erase_if(mesh.triangles, [&](const std::array<int, 3>& t) { return degenerate(mesh, t); });
-    mesh.degenerate_dropped = before - mesh.triangles.size();
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < before; ++i) {  // the surfaces, when there are any, go with their triangles
+        if (degenerate(mesh, mesh.triangles[i])) continue;
+        mesh.triangles[kept] = mesh.triangles[i];
+        if (!mesh.surfaces.empty()) mesh.surfaces[kept] = mesh.surfaces[i];
+        ++kept;
+    }
+    mesh.triangles.resize(kept);
+    if (!mesh.surfaces.empty()) mesh.surfaces.resize(kept);
+    mesh.degenerate_dropped = before - kept;
 }
 
 // Refusals name the scene file, the JSON path and the mesh file.
@@ -113,8 +121,13 @@ TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scen
     for (const NodeMesh& node : read_nodes(path, problem)) {
         const int base = static_cast<int>(mesh.vertices.size());
         mesh.vertices.insert(mesh.vertices.end(), node.mesh.vertices.begin(), node.mesh.vertices.end());
+        if (!node.mesh.surfaces.empty()) mesh.surfaces.resize(mesh.triangles.size());  // the nodes before had none
         for (const std::array<int, 3>& t : node.mesh.triangles)
             mesh.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+        if (!node.mesh.surfaces.empty())
+            mesh.surfaces.insert(mesh.surfaces.end(), node.mesh.surfaces.begin(), node.mesh.surfaces.end());
+        else if (!mesh.surfaces.empty())
+            mesh.surfaces.resize(mesh.triangles.size());
         mesh.broken_faces_dropped += node.mesh.broken_faces_dropped;
     }
     if (mesh.triangles.empty()) problem.refuse_empty(0);

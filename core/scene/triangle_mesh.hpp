@@ -9,9 +9,19 @@
 
 namespace shadowlab {
 
+// A triangle's material and its corners' texture coordinates (TEXCOORD_0, v up as Assimp gives it),
+// as the file gives them: what an alpha-tested material (scene/alpha_test.hpp) reads.
+struct TriangleSurface {
+    int material = -1;  // the file's material index; -1 for none
+    std::array<glm::dvec2, 3> uv{};
+};
+
 struct TriangleMesh {
     std::vector<glm::dvec3> vertices;
     std::vector<std::array<int, 3>> triangles;
+    // Per triangle, parallel to `triangles`; empty when no mesh of the file has texture coordinates
+    // (its triangles then have no surface to test: opaque).
+    std::vector<TriangleSurface> surfaces;
     std::size_t degenerate_dropped = 0;    // the file's zero-area triangles, left out of `triangles`
     std::size_t broken_faces_dropped = 0;  // faces naming a vertex their mesh lacks (as Assimp read them)
 
