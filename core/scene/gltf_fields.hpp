@@ -21,9 +21,6 @@ std::string member_path(const std::string& path, const std::string& key);
 std::string shown(double value);
 std::string shown(const nlohmann::json& value);
 
-// A file's bytes; SceneError "cannot open file" naming it.
-std::string file_bytes(const std::string& file);
-
 // Reads fields of the glTF JSON, refusing with the file and the field's path what the glTF 2.0
 // schema or ShadowLab's camera and light cannot take.
 class GltfFields {

@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "scene/file_bytes.hpp"
 #include "scene/png_alpha.hpp"
 
 namespace shadowlab {

@@ -23,6 +23,7 @@
 #include "io/value_text.hpp"
 #include "limits.hpp"
 #include "math/normalize.hpp"
+#include "scene/file_bytes.hpp"
 #include "scene/gltf_fields.hpp"
 #include "scene/gltf_materials.hpp"
 #include "scene/mesh_scene.hpp"
