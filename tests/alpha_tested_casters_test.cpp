@@ -308,3 +308,77 @@ TEST(FenceScene, ABadTextureIsOneLineNamingTheFileAndTheField) {
         }
     }
 }
+
+namespace {
+
+// The fence as an OBJ whose material's map_d is the fence's texture (its alpha channel), in a temporary
+// folder: the same quad, its texture coordinates v up as OBJ gives them.
+std::string fence_obj() {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "shadowlab_alpha_test";
+    std::filesystem::create_directories(folder);
+    std::filesystem::copy_file(source_path("data/scenes/fence_holes.png"), folder / "fence_holes.png",
+                               std::filesystem::copy_options::overwrite_existing);
+    std::ofstream(folder / "fence.mtl") << "newmtl fence\nKd 0.4 0.3 0.2\nmap_d fence_holes.png\n";
+    std::ofstream(folder / "fence.obj") << "mtllib fence.mtl\n"
+                                           "v -2 0 0\nv 2 0 0\nv 2 2.5 0\nv -2 2.5 0\n"
+                                           "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                           "usemtl fence\nf 1/1 2/2 3/3 4/4\n";
+    return (folder / "fence.obj").string();
+}
+
+}  // namespace
+
+// OBJ's map_d through the importer's child process: the same holes as the glTF fence's, texel for texel.
+TEST(FenceScene, AnObjMaterialsMapDCastsTheSameHoles) {
+    const Scene obj = load_scene(fence_obj());
+    ASSERT_EQ(obj.objects.size(), 2u);  // the ground plane a lone mesh is given, and the fence
+    const SceneObject& obj_fence = obj.objects[1];
+    // Assimp's default material first, then the file's.
+    ASSERT_EQ(obj_fence.mesh->opacity_maps, (std::vector<std::string>{"", "fence_holes.png"}));
+    ASSERT_EQ(obj_fence.material_alpha.size(), 2u);
+    EXPECT_EQ(obj_fence.material_alpha[0], nullptr);
+    ASSERT_NE(obj_fence.material_alpha[1], nullptr);
+    EXPECT_EQ(obj_fence.material_alpha[1]->cutoff, 0.5);
+    Scene gltf = load_scene(source_path(kFence));
+    SceneObject& fence = gltf.objects.at(0);
+    ASSERT_EQ(fence.name, "fence");
+    // A spot light in front of the fence, looking at it.
+    const glm::dmat4 to_unit = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)), glm::dvec3(0.5));
+    const ShadowSetup facing{
+        .maps = {{.world_to_uvz =
+                      to_unit * glm::perspective(glm::radians(60.0), 1.0, 1.0, 20.0) *
+                      glm::lookAt(glm::dvec3(0.5, 1.5, 5.0), glm::dvec3(0.0, 1.25, 0.0), glm::dvec3(0.0, 1.0, 0.0))}}};
+    const DepthMap from_gltf = rasterize_depth(tessellate(gltf), caster_flags(gltf), facing, 512);
+    fence.mesh = obj_fence.mesh;
+    fence.material_alpha = obj_fence.material_alpha;
+    const WorldTriangles triangles = tessellate(gltf);
+    int tested = 0;
+    for (const TriangleAlpha& alpha : triangles.alpha) tested += alpha.test != nullptr;
+    EXPECT_EQ(tested, 2);  // the quad, in two
+    const DepthMap from_obj = rasterize_depth(triangles, caster_flags(gltf), facing, 512);
+    WorldTriangles opaque = triangles;
+    opaque.alpha.clear();
+    const DepthMap from_opaque = rasterize_depth(opaque, caster_flags(gltf), facing, 512);
+    std::size_t differing = 0, through_holes = 0;
+    for (std::size_t i = 0; i < from_obj.codes.size(); ++i) {
+        differing += from_obj.codes[i] != from_gltf.codes[i];
+        through_holes += from_opaque.codes[i] != from_gltf.codes[i];
+    }
+    EXPECT_GT(through_holes, 10'000u);  // the ground seen through the holes, where an opaque fence stands
+    EXPECT_LE(differing, through_holes / 100) << "texels where the OBJ's fence and the glTF's differ";
+}
+
+TEST(FenceScene, AMissingMapDIsOneLineNamingTheMeshAndTheTexture) {
+    const std::filesystem::path folder = std::filesystem::path(fence_obj()).parent_path();
+    std::ofstream(folder / "missing.mtl") << "newmtl fence\nmap_d no_such.png\n";
+    std::ofstream(folder / "missing.obj") << "mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                             "usemtl fence\nf 1/1 2/2 3/3\n";
+    try {
+        load_scene((folder / "missing.obj").string());
+        ADD_FAILURE() << "read";
+    } catch (const SceneError& error) {
+        EXPECT_NE(error.problem().find("map_d texture"), std::string::npos) << error.what();
+        EXPECT_NE(error.problem().find("no_such.png: cannot open file"), std::string::npos) << error.what();
+        EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
+    }
+}

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <unordered_set>
 #include <assimp/Importer.hpp>
+#include <assimp/material.h>
 #include <assimp/scene.h>
 
 #include "io/value_text.hpp"
@@ -182,6 +183,20 @@ std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
     return nodes;
 }
 
+// Each material's opacity texture (OBJ's map_d) as the file names it, empty for none; none at all when
+// no material has one.
+std::vector<std::string> opacity_maps(const aiScene& scene) {
+    std::vector<std::string> maps;
+    for (unsigned m = 0; m < scene.mNumMaterials && scene.mMaterials; ++m) {
+        aiString path;
+        const aiMaterial* material = scene.mMaterials[m];
+        const bool has = material && material->GetTexture(aiTextureType_OPACITY, 0, &path) == aiReturn_SUCCESS;
+        maps.push_back(has ? path.C_Str() : "");
+    }
+    if (std::all_of(maps.begin(), maps.end(), [](const std::string& map) { return map.empty(); })) maps.clear();
+    return maps;
+}
+
 // Why Assimp gave no usable scene: its own reason, or (its OBJ reader takes any text and finds
 // nothing in it, saying nothing) what was seen.
 std::string import_failure(const Assimp::Importer& importer, const aiScene* scene) {
@@ -204,7 +219,10 @@ AssimpRead read_with_assimp(const std::string& path) {
         return {.nodes = {}, .refusal = import_failure(importer, scene), .unreadable = true};
     try {
         if (const std::string bad = non_finite_vertex(*scene); !bad.empty()) return {.nodes = {}, .refusal = bad};
-        return {.nodes = placed_nodes(*scene, corners_of(path)), .refusal = {}};
+        std::vector<NodeMesh> nodes = placed_nodes(*scene, corners_of(path));
+        const std::vector<std::string> maps = opacity_maps(*scene);
+        for (NodeMesh& node : nodes) node.mesh.opacity_maps = maps;
+        return {.nodes = std::move(nodes), .refusal = {}};
     } catch (const Malformed& malformed) {
         return {.nodes = {}, .refusal = "Assimp's reading of it is malformed: " + malformed.what};
     }

@@ -320,6 +320,7 @@ private:
         std::shared_ptr<const TriangleMesh>& mesh = meshes_[object.mesh_file];
         if (!mesh) mesh = std::make_shared<const TriangleMesh>(load_triangle_mesh(object.mesh_file, file_, path));
         object.mesh = mesh;
+        object.material_alpha = opacity_alpha_tests(*mesh, object.mesh_file, file_, path);
     }
 
     const std::string& file_;

@@ -5,21 +5,17 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 
 #include "scene/assimp_reader.hpp"
 #include "scene/child_process.hpp"
+#include "scene/file_bytes.hpp"
 #include "scene/mesh_transfer.hpp"
+#include "scene/png_alpha.hpp"
 #include "scene/scene_error.hpp"
 
 namespace shadowlab {
 namespace {
-
-// A relative mesh path is relative to the directory of the scene file that names it.
-std::filesystem::path resolve(const std::string& file, const std::string& scene_file) {
-    std::filesystem::path path(file);
-    if (path.is_relative() && !scene_file.empty()) path = std::filesystem::path(scene_file).parent_path() / path;
-    return path.lexically_normal();
-}
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -106,6 +102,41 @@ std::vector<NodeMesh> read_nodes(const std::filesystem::path& path, const MeshFi
 
 }  // namespace
 
+std::filesystem::path resolved_mesh_path(const std::string& file, const std::string& scene_file) {
+    std::filesystem::path path(file);
+    if (path.is_relative() && !scene_file.empty()) path = std::filesystem::path(scene_file).parent_path() / path;
+    return path.lexically_normal();
+}
+
+std::vector<std::shared_ptr<const AlphaTest>> opacity_alpha_tests(const TriangleMesh& mesh, const std::string& file,
+                                                                  const std::string& scene_file,
+                                                                  const std::string& json_path) {
+    constexpr double kOpacityCutoff = 0.5;
+    const std::filesystem::path path = resolved_mesh_path(file, scene_file);
+    const MeshFileProblem problem(path, scene_file, json_path);
+    std::vector<std::shared_ptr<const AlphaTest>> tests;
+    for (const std::string& map : mesh.opacity_maps) {
+        if (map.empty()) {
+            tests.push_back(nullptr);
+            continue;
+        }
+        const std::filesystem::path texture = (path.parent_path() / map).lexically_normal();
+        try {
+            const std::string bytes = file_bytes(texture.string());
+            tests.push_back(std::make_shared<const AlphaTest>(
+                AlphaTest{.texture = std::make_shared<const AlphaTexture>(
+                              decode_png_alpha(bytes, texture.string(), AlphaChannel::alpha_else_grey)),
+                          .factor = 1.0,
+                          .cutoff = kOpacityCutoff}));
+        } catch (const SceneError&) {
+            problem.refuse("map_d texture " + texture.string() + ": cannot open file");
+        } catch (const std::invalid_argument& bad) {
+            problem.refuse("map_d texture " + texture.string() + ": " + bad.what());
+        }
+    }
+    return tests;
+}
+
 std::string broken_faces_note(const std::string& file, std::size_t broken_faces) {
     if (broken_faces == 0) return "";
     const std::string faces = broken_faces == 1
@@ -115,7 +146,7 @@ std::string broken_faces_note(const std::string& file, std::size_t broken_faces)
 }
 
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path) {
-    const std::filesystem::path path = resolve(file, scene_file);
+    const std::filesystem::path path = resolved_mesh_path(file, scene_file);
     const MeshFileProblem problem(path, scene_file, json_path);
     TriangleMesh mesh;
     for (const NodeMesh& node : read_nodes(path, problem)) {
@@ -129,6 +160,7 @@ TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scen
         else if (!mesh.surfaces.empty())
             mesh.surfaces.resize(mesh.triangles.size());
         mesh.broken_faces_dropped += node.mesh.broken_faces_dropped;
+        mesh.opacity_maps = node.mesh.opacity_maps;  // the file's, the same in every node
     }
     if (mesh.triangles.empty()) problem.refuse_empty(0);
     problem.check_placed_and_drop_degenerate(mesh);
@@ -138,7 +170,7 @@ TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scen
 
 std::vector<NodeMesh> load_node_meshes(const std::string& file, const std::string& scene_file,
                                        const std::string& json_path) {
-    const std::filesystem::path path = resolve(file, scene_file);
+    const std::filesystem::path path = resolved_mesh_path(file, scene_file);
     const MeshFileProblem problem(path, scene_file, json_path);
     std::vector<NodeMesh> nodes;
     std::size_t degenerate_dropped = 0;
