@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The core tests under AddressSanitizer + UndefinedBehaviorSanitizer, then the fuzzers for a bounded
 # time: scene files over the shipped scenes and the bad files (fuzz/scene_fuzzer.cpp), model files
-# over the shipped meshes and the corpus's small ones (fuzz/mesh_fuzzer.cpp). Any finding fails.
-# Its own build, build-sanitize/ (clang, core and its tests only). Extra arguments go to both fuzzers.
+# over the shipped meshes and the corpus's small ones (fuzz/mesh_fuzzer.cpp), alpha-tested materials'
+# textures over the fence's (fuzz/texture_fuzzer.cpp). Any finding fails.
+# Its own build, build-sanitize/ (clang, core and its tests only). Extra arguments go to every fuzzer.
 set -euo pipefail
 cd "$(dirname "$(readlink -f "$0")")/.."
 scripts/setup.sh
@@ -48,3 +49,8 @@ fuzz() {  # fuzz NAME CORPUS SECONDS [libFuzzer flags...]
 fuzz scene_fuzzer "$scenes" 40 -timeout=10 -dict=fuzz/scene.dict "$@"
 # A model's import may take the child process's whole 60 s before it is refused as a hang.
 fuzz mesh_fuzzer "$models" 40 -timeout=90 "$@"
+# Texture seeds: the fence's (data/scenes/fence_holes.png).
+textures=$(mktemp -d)
+cp data/scenes/*.png "$textures"/
+fuzz texture_fuzzer "$textures" 20 -timeout=10 "$@"
+rm -rf "$textures"

@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config ccache
   libglm-dev nlohmann-json3-dev libcli11-dev libassimp-dev
-  libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libembree-dev
+  libpng-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels openarena-081-maps  # real models for the tests (tests/corpus): Assimp's corpus, three game levels
   libvtk9-dev libvtk9-qt-dev qtbase5-dev libgl-dev

@@ -47,6 +47,9 @@ const std::vector<NoteInfo>& all_note_kinds() {
         {warp_loses, F, "warp loses to the focused map",
          "measured, the warp misclassifies more than twice the focused map's share (and 0.05 percentage points "
          "more): the cause and the numbers follow; the focused map serves this view better"},
+        {blend_read_as_mask, F, "BLEND caster read as MASK",
+         "a shadow map keeps one depth per texel, no partial coverage: a glTF material with alphaMode BLEND "
+         "casts where its alpha is at least 0.5 and not elsewhere, in the maps, the GPU pass and the reference"},
         {light_without_size, F, "a light without size",
          "PCSS sizes penumbrae by the light's radius or angular radius, here 0: hard shadows"},
         {search_clamped, F, "blocker search clamped",

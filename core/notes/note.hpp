@@ -37,6 +37,8 @@ enum class NoteKind {
     outside_clipmap,
     // Found when a warp is measured against the reference.
     warp_loses,
+    // Fallbacks of the scene's loading.
+    blend_read_as_mask,
     // Fallbacks of the lookups' filters.
     light_without_size,
     search_clamped,

@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -257,30 +258,88 @@ void fill_run(DepthCode* row, const Run& run, const DepthPlane& plane, double ce
     }
 }
 
-// One row's run filled in the format's codes, chosen once per raster: the loop over texels knows its
-// format when it is compiled.
-using RunFill = void (*)(DepthCode* row, const Run& run, const DepthPlane& plane, double centre_y);
+// ---- Alpha-tested casters: texture coordinates per texel ----
 
-RunFill run_fill(const DepthFormat& format) {
+// An alpha-tested caster's texture coordinates over the texture's texels, perspective-correct as a GPU
+// interpolates them (Olano and Greer 1997, as polygon_spans.hpp): a point of the triangle with
+// homogeneous weights b has map (u, v, 1) ∝ M b, M's columns the corners' (u w, v w, w), so
+// b ∝ M⁻¹ (u, v, 1), and (s, t, q) = U b with U's columns the corners' (u_tex, v_tex, 1) gives the
+// coordinates (s, t) / q. From the whole triangle's corners, so that clipping leaves them as they were.
+struct TexelUv {
+    glm::dmat3 uvq_from_texel;  // U M⁻¹ A, A taking a texel position to the map's (u, v, 1)
+    const AlphaTest* test;
+
+    bool keeps(double x, double y) const {
+        const glm::dvec3 uvq = uvq_from_texel * glm::dvec3(x, y, 1.0);
+        return test->keeps(glm::dvec2(uvq) / uvq.z);
+    }
+};
+
+// Nullopt when the triangle's plane holds the map's centre (it is seen edge-on: nothing to fill).
+std::optional<TexelUv> texel_uv(const std::array<int, 3>& corners, const TriangleAlpha& alpha,
+                                const MapVertices& vertices, const ShadowMap& map, int resolution) {
+    glm::dmat3 corners_uvw, corners_uvq;
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec4& h = vertices.homogeneous[corners[k]];
+        corners_uvw[k] = {h.x, h.y, h.w};
+        corners_uvq[k] = {alpha.uv[k], 1.0};
+    }
+    if (glm::determinant(corners_uvw) == 0.0) return std::nullopt;
+    // texture_uv(map, uv) * resolution = lo + uv (hi - lo), in texels: taken back.
+    const glm::dvec2 lo = texture_uv(map, glm::dvec2(0.0)) * double(resolution);
+    const glm::dvec2 span = texture_uv(map, glm::dvec2(1.0)) * double(resolution) - lo;
+    const glm::dmat3 map_from_texel{{1.0 / span.x, 0.0, 0.0}, {0.0, 1.0 / span.y, 0.0}, {-lo / span, 1.0}};
+    return TexelUv{.uvq_from_texel = corners_uvq * glm::inverse(corners_uvw) * map_from_texel,
+                   .test = alpha.test.get()};
+}
+
+// fill_run for an alpha-tested caster: a texel whose centre falls where the texture's alpha is below
+// the cutoff keeps what it held.
+template <DepthEncoding encoding, bool reversed>
+void fill_tested_run(DepthCode* row, const Run& run, const DepthPlane& plane, double centre_y, const TexelUv& uv) {
+    const double at_row = plane.at_origin + plane.per_y * centre_y;
+    for (int x = run.first; x <= run.last; ++x) {
+        if (!uv.keeps(x + 0.5, centre_y)) continue;
+        const DepthCode code = code_of<encoding, reversed>(at_row + plane.per_x * (x + 0.5));
+        row[x] = reversed ? std::max(row[x], code) : std::min(row[x], code);
+    }
+}
+
+// One row's run filled in the format's codes, chosen once per raster: the loop over texels knows its
+// format when it is compiled. The opaque loop tests no alpha: a scene without alpha-tested casters
+// draws as before.
+struct RunFills {
+    void (*opaque)(DepthCode* row, const Run& run, const DepthPlane& plane, double centre_y);
+    void (*tested)(DepthCode* row, const Run& run, const DepthPlane& plane, double centre_y, const TexelUv& uv);
+};
+
+template <DepthEncoding encoding, bool reversed>
+RunFills fills_of() {
+    return {fill_run<encoding, reversed>, fill_tested_run<encoding, reversed>};
+}
+
+RunFills run_fills(const DepthFormat& format) {
     using E = DepthEncoding;
     const bool r = format.reversed;
     switch (format.encoding) {
-        case E::unorm16: return r ? fill_run<E::unorm16, true> : fill_run<E::unorm16, false>;
-        case E::unorm24: return r ? fill_run<E::unorm24, true> : fill_run<E::unorm24, false>;
-        case E::float32: return r ? fill_run<E::float32, true> : fill_run<E::float32, false>;
+        case E::unorm16: return r ? fills_of<E::unorm16, true>() : fills_of<E::unorm16, false>();
+        case E::unorm24: return r ? fills_of<E::unorm24, true>() : fills_of<E::unorm24, false>();
+        case E::float32: return r ? fills_of<E::float32, true>() : fills_of<E::float32, false>();
     }
-    return fill_run<E::float32, false>;
+    return fills_of<E::float32, false>();
 }
 
-// A screen triangle ready to fill: counter-clockwise (both windings are drawn) and the texels of its
-// bounding box in the tile.
+// A screen triangle ready to fill: counter-clockwise (both windings are drawn), the texels of its
+// bounding box in the tile, and for an alpha-tested caster its texture coordinates (an index into the
+// map's TexelUv list).
 struct FillTriangle {
     ScreenTriangle corners;
     Run rows, columns;
+    int alpha = -1;
 };
 
 // Appends the screen triangle, ready to fill, if it has an area and a texel centre in its box in the tile.
-void add_to_fill(ScreenTriangle t, const TexelRange& tile, std::vector<FillTriangle>& out) {
+void add_to_fill(ScreenTriangle t, const TexelRange& tile, int alpha, std::vector<FillTriangle>& out) {
     const auto& [a, b, c] = t;
     const glm::dvec2 lo = glm::min(a.p, glm::min(b.p, c.p)), hi = glm::max(a.p, glm::max(b.p, c.p));
     const Run rows = texels_between(lo.y, hi.y, {tile.first.y, tile.last.y});
@@ -288,26 +347,48 @@ void add_to_fill(ScreenTriangle t, const TexelRange& tile, std::vector<FillTrian
     const double area = Edge(a.p, b.p).at(c.p);
     if (rows.last < rows.first || columns.last < columns.first || area == 0.0) return;
     if (area < 0.0) std::swap(t[1], t[2]);
-    out.push_back({t, rows, columns});
+    out.push_back({t, rows, columns, alpha});
 }
 
-// The map's caster triangles after clipping and division, ready to fill; the cores take them in turn
-// (the least depths do not depend on the order they are drawn in).
-std::vector<FillTriangle> fill_triangles(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
-                                         const ShadowMap& map, const TexelRange& tile, int resolution) {
+// The map's caster triangles after clipping and division, ready to fill, and the alpha-tested ones'
+// texture coordinates; the cores take them in turn (the least depths do not depend on the order they
+// are drawn in).
+struct MapFill {
+    std::vector<FillTriangle> triangles;
+    std::vector<TexelUv> alpha;
+};
+
+MapFill fill_triangles(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object, const ShadowMap& map,
+                       const TexelRange& tile, int resolution) {
     const MapVertices vertices = map_vertices(triangles.vertices, map);
-    std::vector<std::vector<FillTriangle>> taken(row_threads());
+    std::vector<MapFill> taken(row_threads());
     parallel_rows([&](int first, int stride) {
         std::vector<ScreenTriangle> screen;
+        MapFill& mine = taken[first];
         for (std::size_t i = first; i < triangles.triangles.size(); i += stride) {
             if (!casts_per_object.at(triangles.object[i])) continue;
+            int alpha = -1;
+            if (triangles.alpha_tested() && triangles.alpha[i].test) {
+                const std::optional<TexelUv> uv =
+                    texel_uv(triangles.triangles[i], triangles.alpha[i], vertices, map, resolution);
+                if (!uv) continue;
+                alpha = static_cast<int>(mine.alpha.size());
+                mine.alpha.push_back(*uv);
+            }
             screen.clear();
             add_on_map(triangles.triangles[i], vertices, map, resolution, screen);
-            for (const ScreenTriangle& t : screen) add_to_fill(t, tile, taken[first]);
+            for (const ScreenTriangle& t : screen) add_to_fill(t, tile, alpha, mine.triangles);
         }
     });
-    std::vector<FillTriangle> out;
-    for (const std::vector<FillTriangle>& part : taken) out.insert(out.end(), part.begin(), part.end());
+    MapFill out;
+    for (const MapFill& part : taken) {
+        const int offset = static_cast<int>(out.alpha.size());
+        for (FillTriangle t : part.triangles) {
+            if (t.alpha >= 0) t.alpha += offset;
+            out.triangles.push_back(t);
+        }
+        out.alpha.insert(out.alpha.end(), part.alpha.begin(), part.alpha.end());
+    }
     return out;
 }
 
@@ -347,15 +428,20 @@ Bands bin_by_band(const std::vector<FillTriangle>& triangles, const Run& tile_ro
     return bands;
 }
 
-// The triangle's texels in `rows`, each row's run cut from its bounding box by the three edges.
-void draw_rows(const FillTriangle& triangle, const Run& rows, RunFill fill, DepthMap& map) {
+// The triangle's texels in `rows`, each row's run cut from its bounding box by the three edges; an
+// alpha-tested caster's texels tested one by one.
+void draw_rows(const FillTriangle& triangle, const Run& rows, const RunFills& fills, const std::vector<TexelUv>& alpha,
+               DepthMap& map) {
     const auto& [a, b, c] = triangle.corners;
     const Edge edges[] = {{b.p, c.p}, {c.p, a.p}, {a.p, b.p}};
     const DepthPlane plane = depth_plane(a, b, c);
     for (int y = rows.first; y <= rows.last; ++y) {
         Run run = triangle.columns;
         for (const Edge& e : edges) run = intersection(run, e.held(y, run));
-        fill(&map.codes[map.index(0, y)], run, plane, y + 0.5);
+        if (triangle.alpha < 0)
+            fills.opaque(&map.codes[map.index(0, y)], run, plane, y + 0.5);
+        else
+            fills.tested(&map.codes[map.index(0, y)], run, plane, y + 0.5, alpha[triangle.alpha]);
     }
 }
 
@@ -366,13 +452,14 @@ void draw_map(const WorldTriangles& triangles, const std::vector<bool>& casts_pe
               DepthMap& out) {
     const ShadowMap drawn = out.format.reversed ? with_reversed_depth(map) : map;
     const TexelRange tile = tile_texels(drawn, out.resolution);
-    const std::vector<FillTriangle> fill = fill_triangles(triangles, casts_per_object, drawn, tile, out.resolution);
-    const Bands bands = bin_by_band(fill, {tile.first.y, tile.last.y});
-    const RunFill fill_one = run_fill(out.format);
+    const MapFill fill = fill_triangles(triangles, casts_per_object, drawn, tile, out.resolution);
+    const Bands bands = bin_by_band(fill.triangles, {tile.first.y, tile.last.y});
+    const RunFills fills = run_fills(out.format);
     parallel_rows([&](int first, int stride) {
         for (int b = first; b < bands.count(); b += stride)
             for (int i : bands.triangles(b))
-                draw_rows(fill[i], intersection(bands.rows(b), fill[i].rows), fill_one, out);
+                draw_rows(fill.triangles[i], intersection(bands.rows(b), fill.triangles[i].rows), fills, fill.alpha,
+                          out);
     });
 }
 
@@ -416,6 +503,7 @@ std::vector<WorldTriangles> casters_per_page(const WorldTriangles& triangles, co
             for (int k = 0; k < 3; ++k) page.vertices.push_back(triangles.vertices[triangles.triangles[t][k]]);
             page.triangles.push_back({base, base + 1, base + 2});
             page.object.push_back(triangles.object[t]);
+            if (triangles.alpha_tested()) page.alpha.push_back(triangles.alpha[t]);
         }
     return out;
 }

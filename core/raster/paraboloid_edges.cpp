@@ -68,26 +68,30 @@ void append_split(const SplitRule& rule, const glm::dvec3& a, const glm::dvec3& 
 // one triangle), so the limit stops it on both sides alike; an edge left whole is never halved later.
 class Splitter {
 public:
-    Splitter(const std::vector<glm::dvec3>& vertices, const SplitRule& rule) : rule_(rule) { out_.vertices = vertices; }
+    Splitter(const WorldTriangles& source, const SplitRule& rule) : source_(source), rule_(rule) {
+        out_.vertices = source.vertices;
+    }
 
     // Edge k of a triangle runs from its vertex k to vertex k + 1. The triangle is turned so that its
     // split edges come first, then cut into 2 (one split edge: midpoint to the opposite corner), 3 (two:
     // a corner triangle and the rest of the quad along its shorter diagonal) or 4 pieces (three:
-    // midpoint subdivision), each split again one level deeper.
-    void split(const std::array<int, 3>& t, int object, int depth) {
+    // midpoint subdivision), each split again one level deeper. Each piece keeps the object and the
+    // alpha test of the source triangle it was cut from.
+    void split(const std::array<int, 3>& t, int source, int depth) {
         std::array<bool, 3> halved;
         for (int k = 0; k < 3; ++k) halved[k] = halves(rule_, vertex(t[k]), vertex(t[(k + 1) % 3]), depth);
         const int count = int(std::count(halved.begin(), halved.end(), true));
         if (count == 0) {
             out_.triangles.push_back(t);
-            out_.object.push_back(object);
+            out_.object.push_back(source_.object[source]);
+            if (source_.alpha_tested()) out_.alpha.push_back(piece_alpha(t, source));
             return;
         }
         int first = 0;  // the split edge after an unsplit one (with three split edges, any)
         for (int k = 0; k < 3; ++k)
             if (halved[k] && !halved[(k + 2) % 3]) first = k;
         const int a = t[first], b = t[(first + 1) % 3], c = t[(first + 2) % 3];
-        const auto deeper = [&](int p, int q, int r) { split({p, q, r}, object, depth + 1); };
+        const auto deeper = [&](int p, int q, int r) { split({p, q, r}, source, depth + 1); };
         const int ab = midpoint(a, b);
         if (count == 1) {
             deeper(a, ab, c);
@@ -117,6 +121,25 @@ public:
 
 private:
     glm::dvec3 vertex(int i) const { return out_.vertices[i]; }
+
+    // The source triangle's alpha test with the piece's corners' texture coordinates: each corner's
+    // barycentric weights in the source triangle (a piece's corners lie in its plane).
+    TriangleAlpha piece_alpha(const std::array<int, 3>& piece, int source) const {
+        TriangleAlpha alpha = source_.alpha[source];
+        if (!alpha.test) return alpha;
+        const std::array<int, 3>& s = source_.triangles[source];
+        const glm::dvec3 a = vertex(s[0]), ab = vertex(s[1]) - a, ac = vertex(s[2]) - a;
+        const double ab_ab = glm::dot(ab, ab), ab_ac = glm::dot(ab, ac), ac_ac = glm::dot(ac, ac);
+        const double determinant = ab_ab * ac_ac - ab_ac * ab_ac;  // > 0: a caster has an area
+        const TriangleAlpha whole = alpha;
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 p = vertex(piece[k]) - a;
+            const double p_ab = glm::dot(p, ab), p_ac = glm::dot(p, ac);
+            alpha.uv[k] =
+                whole.uv_at((ac_ac * p_ab - ab_ac * p_ac) / determinant, (ab_ab * p_ac - ab_ac * p_ab) / determinant);
+        }
+        return alpha;
+    }
     double distance(int i, int j) const { return glm::distance(vertex(i), vertex(j)); }
 
     // The one midpoint of the edge i–j, whichever triangle asks first ((a + b) / 2 is symmetric).
@@ -127,6 +150,7 @@ private:
         return at->second;
     }
 
+    const WorldTriangles& source_;
     SplitRule rule_;
     WorldTriangles out_;
     std::unordered_map<std::uint64_t, int> midpoints_;
@@ -147,9 +171,9 @@ bool splits_casters(const ShadowMap& map) { return projection_kind(map).edge_sag
 
 WorldTriangles split_casters(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
                              const ShadowMap& map, int texture_resolution) {
-    Splitter splitter(triangles.vertices, split_rule(map, texture_resolution));
+    Splitter splitter(triangles, split_rule(map, texture_resolution));
     for (std::size_t i = 0; i < triangles.triangles.size(); ++i)
-        if (casts_per_object.at(triangles.object[i])) splitter.split(triangles.triangles[i], triangles.object[i], 0);
+        if (casts_per_object.at(triangles.object[i])) splitter.split(triangles.triangles[i], int(i), 0);
     return std::move(splitter).result();
 }
 

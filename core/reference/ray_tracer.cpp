@@ -28,8 +28,32 @@ DevicePtr new_device() {
     return device;
 }
 
-// A committed scene holding the chosen triangles; primitive i is chosen[i].
-ScenePtr build_scene(RTCDevice device, const WorldTriangles& triangles, const std::vector<int>& chosen) {
+// Embree's intersection and occlusion filter for alpha-tested casters: a hit where the triangle's
+// texture alpha (at the hit's barycentric weights u, v of its second and third corners) is below its
+// cutoff is refused, and the ray goes on to the next hit. The geometry's user data is its primitives'
+// alpha tests.
+void alpha_filter(const RTCFilterFunctionNArguments* args) {
+    const auto& alpha = *static_cast<const std::vector<TriangleAlpha>*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const TriangleAlpha& triangle = alpha[RTCHitN_primID(args->hit, args->N, i)];
+        if (!triangle.keeps(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i))) args->valid[i] = 0;
+    }
+}
+
+// The chosen triangles' alpha tests, primitive i's at i; empty when none of them is alpha-tested.
+std::vector<TriangleAlpha> chosen_alpha(const WorldTriangles& triangles, const std::vector<int>& chosen) {
+    if (!triangles.alpha_tested()) return {};
+    std::vector<TriangleAlpha> out;
+    for (int i : chosen) out.push_back(triangles.alpha[i]);
+    if (std::none_of(out.begin(), out.end(), [](const TriangleAlpha& a) { return a.test != nullptr; })) return {};
+    return out;
+}
+
+// A committed scene holding the chosen triangles; primitive i is chosen[i]. With alpha tests (`alpha`,
+// which must outlive the scene) its hits pass alpha_filter.
+ScenePtr build_scene(RTCDevice device, const WorldTriangles& triangles, const std::vector<int>& chosen,
+                     const std::vector<TriangleAlpha>& alpha) {
     ScenePtr scene(rtcNewScene(device), &rtcReleaseScene);
     rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);  // watertight triangle tests, robust traversal
     if (!chosen.empty()) {
@@ -42,6 +66,11 @@ ScenePtr build_scene(RTCDevice device, const WorldTriangles& triangles, const st
             geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), chosen.size()));
         for (std::size_t i = 0; i < chosen.size(); ++i)
             for (int k = 0; k < 3; ++k) indices[3 * i + k] = static_cast<unsigned>(triangles.triangles[chosen[i]][k]);
+        if (!alpha.empty()) {
+            rtcSetGeometryUserData(geometry, const_cast<std::vector<TriangleAlpha>*>(&alpha));
+            rtcSetGeometryIntersectFilterFunction(geometry, alpha_filter);
+            rtcSetGeometryOccludedFilterFunction(geometry, alpha_filter);
+        }
         rtcCommitGeometry(geometry);
         rtcAttachGeometry(scene.get(), geometry);
         rtcReleaseGeometry(geometry);
@@ -102,16 +131,21 @@ RTCRay make_ray(const glm::dvec3& origin, const glm::dvec3& direction, double t_
 }  // namespace
 
 struct RayTracer::Bvhs {
+    // Each BVH's primitives' alpha tests, which its filter reads (declared before the BVHs: they are
+    // released after them).
+    std::vector<TriangleAlpha> all_alpha, casters_alpha;
     DevicePtr device;
-    ScenePtr all, casters;
+    ScenePtr all{nullptr, &rtcReleaseScene}, casters{nullptr, &rtcReleaseScene};
 };
 
 RayTracer::RayTracer(const WorldTriangles& triangles, const std::vector<bool>& casts) {
-    DevicePtr device = new_device();
-    ScenePtr all = build_scene(device.get(), triangles, triangles_where(triangles, [](int) { return true; }));
-    ScenePtr casters = build_scene(device.get(), triangles,
-                                   triangles_where(triangles, [&](int object) { return bool(casts.at(object)); }));
-    bvhs_.reset(new Bvhs{std::move(device), std::move(all), std::move(casters)});
+    const std::vector<int> all = triangles_where(triangles, [](int) { return true; });
+    const std::vector<int> casters = triangles_where(triangles, [&](int object) { return bool(casts.at(object)); });
+    bvhs_.reset(new Bvhs{.all_alpha = chosen_alpha(triangles, all),
+                         .casters_alpha = chosen_alpha(triangles, casters),
+                         .device = new_device()});
+    bvhs_->all = build_scene(bvhs_->device.get(), triangles, all, bvhs_->all_alpha);
+    bvhs_->casters = build_scene(bvhs_->device.get(), triangles, casters, bvhs_->casters_alpha);
 }
 
 RayTracer::~RayTracer() = default;

@@ -1,6 +1,8 @@
 #pragma once
 // Rays against a scene's triangles with Embree 3 (single precision), Embree kept out of the header:
-// one BVH over every triangle for the nearest hit, one over the casters' for occlusion.
+// one BVH over every triangle for the nearest hit, one over the casters' for occlusion. An
+// alpha-tested triangle (WorldTriangles::alpha) is not there where its alpha is below its cutoff:
+// Embree's intersection and occlusion filters pass such hits over, for both kinds of ray.
 #include <memory>
 #include <optional>
 #include <vector>

@@ -24,6 +24,7 @@ WorldTriangles casters_relative_to(const WorldTriangles& triangles, const std::v
         if (casts_per_object.at(triangles.object[i])) {
             out.triangles.push_back(triangles.triangles[i]);
             out.object.push_back(triangles.object[i]);
+            if (triangles.alpha_tested()) out.alpha.push_back(triangles.alpha[i]);
         }
     return out;
 }

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <unordered_set>
 #include <assimp/Importer.hpp>
+#include <assimp/material.h>
 #include <assimp/scene.h>
 
 #include "io/value_text.hpp"
@@ -93,6 +94,18 @@ void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& wor
         by_position[key].push_back(index);
         return welded_of_file[file_vertex] = index;
     };
+    const aiVector3D* file_uvs = mesh.mNumVertices > 0 ? mesh.mTextureCoords[0] : nullptr;
+    if (file_uvs) out.surfaces.resize(out.triangles.size());  // the meshes before it had none
+    // The triangle's surface, kept parallel to the triangles once any mesh gave texture coordinates.
+    const auto add_surface = [&](const std::array<unsigned, 3>& file_corners) {
+        if (!file_uvs) {
+            if (!out.surfaces.empty()) out.surfaces.emplace_back();
+            return;
+        }
+        TriangleSurface surface{.material = static_cast<int>(mesh.mMaterialIndex), .uv = {}};
+        for (int k = 0; k < 3; ++k) surface.uv[k] = {file_uvs[file_corners[k]].x, file_uvs[file_corners[k]].y};
+        out.surfaces.push_back(surface);
+    };
     std::vector<int> corners;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         const aiFace& face = mesh.mFaces[f];
@@ -106,10 +119,18 @@ void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& wor
         }
         corners.clear();
         for (unsigned c : file_corners) corners.push_back(welded(c));
-        if (corners.size() == 3)
+        if (corners.size() == 3) {
             out.triangles.push_back({corners[0], corners[1], corners[2]});
-        else
-            for (const std::array<int, 3>& t : triangulate_polygon(out.vertices, corners)) out.triangles.push_back(t);
+            add_surface({file_corners[0], file_corners[1], file_corners[2]});
+            continue;
+        }
+        for (const std::array<int, 3>& t : triangulate_polygon(out.vertices, corners)) {
+            out.triangles.push_back(t);
+            std::array<unsigned, 3> of_file{};  // each welded corner's first place in the face
+            for (int k = 0; k < 3; ++k)
+                of_file[k] = file_corners[std::find(corners.begin(), corners.end(), t[k]) - corners.begin()];
+            add_surface(of_file);
+        }
     }
 }
 
@@ -162,6 +183,20 @@ std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
     return nodes;
 }
 
+// Each material's opacity texture (OBJ's map_d) as the file names it, empty for none; none at all when
+// no material has one.
+std::vector<std::string> opacity_maps(const aiScene& scene) {
+    std::vector<std::string> maps;
+    for (unsigned m = 0; m < scene.mNumMaterials && scene.mMaterials; ++m) {
+        aiString path;
+        const aiMaterial* material = scene.mMaterials[m];
+        const bool has = material && material->GetTexture(aiTextureType_OPACITY, 0, &path) == aiReturn_SUCCESS;
+        maps.push_back(has ? path.C_Str() : "");
+    }
+    if (std::all_of(maps.begin(), maps.end(), [](const std::string& map) { return map.empty(); })) maps.clear();
+    return maps;
+}
+
 // Why Assimp gave no usable scene: its own reason, or (its OBJ reader takes any text and finds
 // nothing in it, saying nothing) what was seen.
 std::string import_failure(const Assimp::Importer& importer, const aiScene* scene) {
@@ -184,7 +219,10 @@ AssimpRead read_with_assimp(const std::string& path) {
         return {.nodes = {}, .refusal = import_failure(importer, scene), .unreadable = true};
     try {
         if (const std::string bad = non_finite_vertex(*scene); !bad.empty()) return {.nodes = {}, .refusal = bad};
-        return {.nodes = placed_nodes(*scene, corners_of(path)), .refusal = {}};
+        std::vector<NodeMesh> nodes = placed_nodes(*scene, corners_of(path));
+        const std::vector<std::string> maps = opacity_maps(*scene);
+        for (NodeMesh& node : nodes) node.mesh.opacity_maps = maps;
+        return {.nodes = std::move(nodes), .refusal = {}};
     } catch (const Malformed& malformed) {
         return {.nodes = {}, .refusal = "Assimp's reading of it is malformed: " + malformed.what};
     }

@@ -23,6 +23,9 @@
 #include "io/value_text.hpp"
 #include "limits.hpp"
 #include "math/normalize.hpp"
+#include "scene/file_bytes.hpp"
+#include "scene/gltf_fields.hpp"
+#include "scene/gltf_materials.hpp"
 #include "scene/mesh_scene.hpp"
 #include "scene/scene_error.hpp"
 #include "scene/scene_validation.hpp"
@@ -43,17 +46,6 @@ constexpr double kOrthographicNearShare = 1e-6;  // an orthographic camera's zne
 // A spot's default outer cone angle (KHR_lights_punctual), from its axis.
 constexpr double kDefaultOuterConeAngle = std::numbers::pi / 4.0;
 
-std::string indexed(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
-std::string member_path(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
-}
-std::string shown(double value) { return significant(value, kValueDigits); }
-std::string shown(const nlohmann::json& value) {
-    constexpr std::size_t kMaxShownChars = 60;  // a long value is cut in messages
-    const std::string text = value.dump();
-    return text.size() <= kMaxShownChars ? text : text.substr(0, kMaxShownChars - 3) + "...";
-}
-
 std::string lowercase_extension(const std::string& file) {
     std::string extension = std::filesystem::path(file).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -62,15 +54,6 @@ std::string lowercase_extension(const std::string& file) {
 }
 
 // ---- the file's JSON -------------------------------------------------------------------------
-
-std::string file_bytes(const std::string& file) {
-    std::error_code error;
-    std::ifstream in(file, std::ios::binary);
-    if (!std::filesystem::is_regular_file(file, error) || !in) throw SceneError(file, "", "cannot open file");
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return bytes.str();
-}
 
 // A .glb is a 12-byte header (magic "glTF", version 2, length), then chunks of (length, type, data);
 // the first chunk holds the JSON (glTF 2.0, "Binary glTF Layout"). Words are little-endian.
@@ -119,89 +102,6 @@ json gltf_json(const std::string& file) {
         throw SceneError(file, "", "malformed JSON: " + message.substr(message.find(']') + 2));
     }
 }
-
-// ---- fields, with their paths ----------------------------------------------------------------
-
-// Reads fields of the glTF JSON, refusing with the file and the field's path what the glTF 2.0
-// schema or ShadowLab's camera and light cannot take.
-class GltfFields {
-public:
-    explicit GltfFields(const std::string& file) : file_(file) {}
-
-    [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
-        throw SceneError(file_, path, problem);
-    }
-
-    // The member `key` of an object, or nullptr; the object itself must be one.
-    const json* member(const json& object, const std::string& path, const char* key) const {
-        if (!object.is_object()) fail(path, "expected an object, got " + std::string(object.type_name()));
-        const auto found = object.find(key);
-        return found == object.end() ? nullptr : &*found;
-    }
-    // The array `key` of an object; an empty one when absent.
-    const json& array(const json& object, const std::string& path, const char* key) const {
-        const json* value = member(object, path, key);
-        if (value && !value->is_array()) fail(member_path(path, key), "expected an array");
-        return value ? *value : no_items();
-    }
-    static const json& no_items() {
-        static const json none = json::array();
-        return none;
-    }
-    // The object at a chain of keys (extensions.KHR_lights_punctual), or nullptr.
-    const json* nested(const json& object, const std::string& path, std::initializer_list<const char*> keys) const {
-        const json* value = &object;
-        std::string at = path;
-        for (const char* key : keys) {
-            value = member(*value, at, key);
-            if (!value) return nullptr;
-            at = member_path(at, key);
-        }
-        return value;
-    }
-    std::optional<double> number(const json& object, const std::string& path, const char* key) const {
-        const json* value = member(object, path, key);
-        if (!value) return std::nullopt;
-        if (!value->is_number()) fail(member_path(path, key), "expected a number, got " + shown(*value));
-        return value->get<double>();
-    }
-    double required_number(const json& object, const std::string& path, const char* key) const {
-        const std::optional<double> value = number(object, path, key);
-        if (!value) fail(member_path(path, key), "required, but missing");
-        return *value;
-    }
-    // `count` numbers, or none when absent.
-    std::vector<double> numbers(const json& object, const std::string& path, const char* key, std::size_t count) const {
-        const json* value = member(object, path, key);
-        if (!value) return {};
-        const bool ok = value->is_array() && value->size() == count &&
-                        std::all_of(value->begin(), value->end(), [](const json& item) { return item.is_number(); });
-        if (!ok) fail(member_path(path, key), "expected an array of " + std::to_string(count) + " numbers");
-        return value->get<std::vector<double>>();
-    }
-    std::string text(const json& object, const std::string& path, const char* key) const {
-        const json* value = member(object, path, key);
-        if (!value || !value->is_string()) fail(member_path(path, key), "expected a string");
-        return value->get<std::string>();
-    }
-    // An index into an array of `count` items.
-    std::size_t index(const json& value, const std::string& path, std::size_t count) const {
-        if (value.is_number_unsigned() && value.get<std::uint64_t>() < count) return value.get<std::size_t>();
-        if (count == 0) fail(path, "an index into an array the file leaves empty or out, got " + shown(value));
-        fail(path, "expected an index below " + std::to_string(count) + ", got " + shown(value));
-    }
-    std::optional<std::size_t> index(const json& object, const std::string& path, const char* key,
-                                     std::size_t count) const {
-        const json* value = member(object, path, key);
-        return value ? std::optional(index(*value, member_path(path, key), count)) : std::nullopt;
-    }
-    void expect(bool ok, const std::string& path, const std::string& expected, double got) const {
-        if (!ok) fail(path, "expected " + expected + ", got " + shown(got));
-    }
-
-private:
-    const std::string& file_;
-};
 
 constexpr const char* kLightsPath = "extensions.KHR_lights_punctual.lights";
 
@@ -530,8 +430,9 @@ Camera placed_camera(const PlacedLens& lens, const Aabb& meshes, std::vector<std
     return camera;
 }
 
-// Each node holding meshes, as one object that casts and receives; its vertices already in the world.
-std::vector<SceneObject> node_objects(const std::string& file) {
+// Each node holding meshes, as one object that casts and receives; its vertices already in the world,
+// its materials' alpha tests beside it.
+std::vector<SceneObject> node_objects(const std::string& file, const MaterialAlpha& materials) {
     std::vector<SceneObject> objects;
     // Absolute: load_node_meshes reads a relative path as relative to the scene file's directory.
     for (NodeMesh& node : load_node_meshes(std::filesystem::absolute(file).string(), file, "meshes")) {
@@ -540,6 +441,7 @@ std::vector<SceneObject> node_objects(const std::string& file) {
         object.shape = Shape::mesh;
         object.mesh_file = file;
         object.mesh = std::make_shared<const TriangleMesh>(std::move(node.mesh));
+        object.material_alpha = materials.tests;
         objects.push_back(std::move(object));
     }
     return objects;
@@ -585,7 +487,9 @@ GltfScene read_gltf_scene_unvalidated(const std::string& file, const SceneChoice
     Scene& scene = out.scene;
     scene.name = std::filesystem::path(file).stem().string();
     scene.source_file = file;
-    scene.objects = node_objects(file);
+    const MaterialAlpha materials = read_material_alpha(fields, root, file);
+    scene.objects = node_objects(file, materials);
+    scene.notes = materials.notes;
     const Aabb meshes = scene.bounds();
     scene.camera = lens ? placed_camera(*lens, meshes, out.defaulted) : camera_framing(meshes);
     scene.light = light.value_or(sun_beside(scene.camera));

@@ -60,6 +60,7 @@ Scene scene_around_mesh(const std::string& mesh_file) {
     object.shape = Shape::mesh;
     object.mesh_file = mesh_file;
     object.mesh = mesh;
+    object.material_alpha = opacity_alpha_tests(*mesh, path, mesh_file, "mesh");
     scene.camera = camera_framing(mesh->bounds());
     scene.light = sun_beside(scene.camera);
     scene.objects = {ground_under(mesh->bounds(), scene.light), object};

@@ -58,12 +58,25 @@ public:
         at_ += length;
         return true;
     }
+    // A count, then that many texts: fails at the first the bytes lack.
+    bool get_texts(std::vector<std::string>& texts) {
+        std::uint64_t count = 0;
+        if (!get(count)) return false;
+        for (std::uint64_t i = 0; i < count; ++i)
+            if (!get_text(texts.emplace_back())) return false;
+        return true;
+    }
     bool done() const { return at_ == bytes_.size(); }
 
 private:
     const std::string& bytes_;
     std::size_t at_ = 0;
 };
+
+// The surfaces are none or one per triangle.
+bool surfaces_parallel(const TriangleMesh& mesh) {
+    return mesh.surfaces.empty() || mesh.surfaces.size() == mesh.triangles.size();
+}
 
 bool indices_in_range(const TriangleMesh& mesh) {
     const auto count = static_cast<long long>(mesh.vertices.size());
@@ -82,6 +95,9 @@ std::string encode_node_meshes(const std::vector<NodeMesh>& nodes) {
         out.put_text(node.node_name);
         out.put_all(node.mesh.vertices);
         out.put_all(node.mesh.triangles);
+        out.put_all(node.mesh.surfaces);
+        out.put<std::uint64_t>(node.mesh.opacity_maps.size());
+        for (const std::string& map : node.mesh.opacity_maps) out.put_text(map);
         out.put<std::uint64_t>(node.mesh.broken_faces_dropped);
     }
     return out.take();
@@ -96,7 +112,8 @@ std::optional<std::vector<NodeMesh>> decode_node_meshes(const std::string& bytes
         NodeMesh node;
         std::uint64_t broken = 0;
         if (!in.get_text(node.node_name) || !in.get_all(node.mesh.vertices) || !in.get_all(node.mesh.triangles) ||
-            !in.get(broken) || !indices_in_range(node.mesh))
+            !in.get_all(node.mesh.surfaces) || !in.get_texts(node.mesh.opacity_maps) || !in.get(broken) ||
+            !indices_in_range(node.mesh) || !surfaces_parallel(node.mesh))
             return std::nullopt;
         node.mesh.broken_faces_dropped = broken;
         nodes.push_back(std::move(node));

@@ -20,6 +20,7 @@ std::vector<std::string> loading_notes(const Scene& scene) {
     }
     std::vector<std::string> notes;
     for (const std::string& file : files) notes.push_back(broken_faces_note(file, broken[file]));
+    for (const Note& note : scene.notes) notes.push_back(describe(note));
     return notes;
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "geometry/aabb.hpp"
+#include "notes/note.hpp"
 #include "scene/camera.hpp"
 #include "scene/light.hpp"
 #include "scene/scene_object.hpp"
@@ -16,12 +17,13 @@ struct Scene {
     Camera camera;
     Light light;
     std::vector<SceneObject> objects;
+    std::vector<Note> notes;  // what loading degraded (a BLEND caster read as MASK)
 
     Aabb bounds() const;  // union of the objects' world bounds
 };
 
 // What loading left out of the scene's mesh files, one line per file (broken_faces_note), in the
-// order the objects name them: for the window's messages.
+// order the objects name them, then its notes (describe): for the window's messages.
 std::vector<std::string> loading_notes(const Scene& scene);
 
 }  // namespace shadowlab

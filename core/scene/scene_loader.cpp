@@ -47,6 +47,7 @@
 #include <nlohmann/json.hpp>
 
 #include "math/normalize.hpp"
+#include "scene/file_bytes.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/json_position.hpp"
 #include "scene/mesh_scene.hpp"
@@ -319,6 +320,7 @@ private:
         std::shared_ptr<const TriangleMesh>& mesh = meshes_[object.mesh_file];
         if (!mesh) mesh = std::make_shared<const TriangleMesh>(load_triangle_mesh(object.mesh_file, file_, path));
         object.mesh = mesh;
+        object.material_alpha = opacity_alpha_tests(*mesh, object.mesh_file, file_, path);
     }
 
     const std::string& file_;
@@ -328,19 +330,11 @@ private:
 // The scene, what the glTF file lacks said on stderr.
 Scene told(GltfScene gltf, const std::string& gltf_file) {
     for (const std::string& assumed : gltf.defaulted) std::clog << gltf_file << ": " << assumed << "\n";
+    for (const Note& note : gltf.scene.notes) std::clog << gltf_file << ": " << describe(note) << "\n";
     return std::move(gltf.scene);
 }
 
 bool references_gltf(const json& root) { return root.is_object() && root.contains("gltf"); }
-
-std::string file_text(const std::string& path) {
-    std::error_code error;
-    std::ifstream in(path, std::ios::binary);
-    if (!std::filesystem::is_regular_file(path, error) || !in) throw SceneError(path, "", "cannot open file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 // What a file is: a glTF scene by its extension (.gltf, .glb), a scene JSON by its extension (.json)
 // or by its first byte that is not blank being '{', a mesh by any other extension Assimp reads, and
@@ -374,7 +368,7 @@ Scene load_scene(const std::string& path, const SceneChoice& choice) {
     check_choice(path, "", "camera", choice.camera, 1, "the file");
     check_choice(path, "", "light", choice.light, 1, "the file");
     if (kind == SceneFileKind::mesh) return scene_around_mesh(path);
-    return parse_scene(file_text(path), path);
+    return parse_scene(file_bytes(path), path);
 }
 
 Scene parse_scene(const std::string& json_text, const std::string& file) {
@@ -394,7 +388,7 @@ std::optional<GltfReference> gltf_reference_of(const std::string& path, const Sc
     const SceneFileKind kind = scene_file_kind(path);
     if (kind == SceneFileKind::gltf) return GltfReference{.gltf_file = path, .choice = choice, .roles = {}, .name = {}};
     if (kind == SceneFileKind::mesh) return std::nullopt;
-    const json root = parse_scene_json(file_text(path), path);
+    const json root = parse_scene_json(file_bytes(path), path);
     if (!references_gltf(root)) return std::nullopt;
     return SceneReader(path).read_reference(root);
 }

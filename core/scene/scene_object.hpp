@@ -2,9 +2,11 @@
 // One object of a scene: a primitive or a mesh, placed by position, rotation and scale.
 #include <memory>
 #include <string>
+#include <vector>
 #include <glm/glm.hpp>
 
 #include "geometry/aabb.hpp"
+#include "scene/alpha_test.hpp"
 #include "scene/triangle_mesh.hpp"
 
 namespace shadowlab {
@@ -24,6 +26,9 @@ struct SceneObject {
     double height = 1.0;    // cylinder (along local y)
     std::string mesh_file;  // mesh: path as written in the scene
     std::shared_ptr<const TriangleMesh> mesh;
+    // Per material of its mesh file (TriangleSurface::material): an alpha-tested material's test, null
+    // for an opaque one; empty when every material is opaque.
+    std::vector<std::shared_ptr<const AlphaTest>> material_alpha;
     bool casts = true;
     bool receives = true;
 

@@ -92,6 +92,19 @@ TriangleMesh primitive(const SceneObject& object, int segments) {
     return {};
 }
 
+// The alpha test of a mesh's triangle t, null for an opaque one.
+TriangleAlpha alpha_of(const SceneObject& object, std::size_t t) {
+    if (!object.mesh || object.mesh->surfaces.empty()) return {};
+    const TriangleSurface& surface = object.mesh->surfaces[t];
+    const bool tested = surface.material >= 0 && surface.material < int(object.material_alpha.size());
+    return tested ? TriangleAlpha{.test = object.material_alpha[surface.material], .uv = surface.uv} : TriangleAlpha{};
+}
+
+bool has_alpha_test(const SceneObject& object) {
+    return std::any_of(object.material_alpha.begin(), object.material_alpha.end(),
+                       [](const std::shared_ptr<const AlphaTest>& test) { return test != nullptr; });
+}
+
 void append(WorldTriangles& out, const TriangleMesh& mesh, const glm::dmat4& model, int object) {
     const int base = static_cast<int>(out.vertices.size());
     for (const glm::dvec3& v : mesh.vertices) out.vertices.push_back(glm::dvec3(model * glm::dvec4(v, 1.0)));
@@ -105,12 +118,16 @@ void append(WorldTriangles& out, const TriangleMesh& mesh, const glm::dmat4& mod
 
 WorldTriangles tessellate(const Scene& scene, int segments) {
     WorldTriangles out;
+    const bool alpha_tested = std::any_of(scene.objects.begin(), scene.objects.end(), has_alpha_test);
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
         const SceneObject& object = scene.objects[i];
+        const std::size_t first = out.triangles.size();
         if (object.shape != Shape::mesh)
             append(out, primitive(object, segments), object.model_matrix(), i);
         else if (object.mesh)
             append(out, *object.mesh, object.model_matrix(), i);
+        if (alpha_tested)
+            for (std::size_t t = 0; t < out.triangles.size() - first; ++t) out.alpha.push_back(alpha_of(object, t));
     }
     return out;
 }

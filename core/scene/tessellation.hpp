@@ -4,6 +4,7 @@
 #include <vector>
 #include <glm/glm.hpp>
 
+#include "scene/alpha_test.hpp"
 #include "scene/scene.hpp"
 
 namespace shadowlab {
@@ -12,11 +13,18 @@ struct WorldTriangles {
     std::vector<glm::dvec3> vertices;
     std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from outside
     std::vector<int> object;                    // per triangle: its index in Scene::objects
+    // Per triangle, its alpha test (scene/alpha_test.hpp: null for an opaque one); empty when no
+    // triangle is alpha-tested, so that every reader's opaque path stays as it was.
+    std::vector<TriangleAlpha> alpha;
+
+    bool alpha_tested() const { return !alpha.empty(); }
 };
 
 // Every object through its model_matrix(): a box gives 12 triangles, a plane 2 (facing +y), a
 // sphere a UV sphere of `segments` slices and segments / 2 stacks, a cylinder `segments` side
-// quads and two fan caps, a mesh its own triangles (as wound in its file).
+// quads and two fan caps, a mesh its own triangles (as wound in its file), each with its material's
+// alpha test where the object has one (SceneObject::material_alpha) and the file gave its texture
+// coordinates.
 WorldTriangles tessellate(const Scene& scene, int segments = 24);
 
 // The triangles with every vertex moved by -origin: relative to a light or the eye, as float32

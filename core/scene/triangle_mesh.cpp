@@ -5,21 +5,17 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 
 #include "scene/assimp_reader.hpp"
 #include "scene/child_process.hpp"
+#include "scene/file_bytes.hpp"
 #include "scene/mesh_transfer.hpp"
+#include "scene/png_alpha.hpp"
 #include "scene/scene_error.hpp"
 
 namespace shadowlab {
 namespace {
-
-// A relative mesh path is relative to the directory of the scene file that names it.
-std::filesystem::path resolve(const std::string& file, const std::string& scene_file) {
-    std::filesystem::path path(file);
-    if (path.is_relative() && !scene_file.empty()) path = std::filesystem::path(scene_file).parent_path() / path;
-    return path.lexically_normal();
-}
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -32,8 +28,16 @@ bool degenerate(const TriangleMesh& mesh, const std::array<int, 3>& t) {
 
 void drop_degenerate(TriangleMesh& mesh) {
     const std::size_t before = mesh.triangles.size();
-    std::erase_if(mesh.triangles, [&](const std::array<int, 3>& t) { return degenerate(mesh, t); });
-    mesh.degenerate_dropped = before - mesh.triangles.size();
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < before; ++i) {  // the surfaces, when there are any, go with their triangles
+        if (degenerate(mesh, mesh.triangles[i])) continue;
+        mesh.triangles[kept] = mesh.triangles[i];
+        if (!mesh.surfaces.empty()) mesh.surfaces[kept] = mesh.surfaces[i];
+        ++kept;
+    }
+    mesh.triangles.resize(kept);
+    if (!mesh.surfaces.empty()) mesh.surfaces.resize(kept);
+    mesh.degenerate_dropped = before - kept;
 }
 
 // Refusals name the scene file, the JSON path and the mesh file.
@@ -98,6 +102,41 @@ std::vector<NodeMesh> read_nodes(const std::filesystem::path& path, const MeshFi
 
 }  // namespace
 
+std::filesystem::path resolved_mesh_path(const std::string& file, const std::string& scene_file) {
+    std::filesystem::path path(file);
+    if (path.is_relative() && !scene_file.empty()) path = std::filesystem::path(scene_file).parent_path() / path;
+    return path.lexically_normal();
+}
+
+std::vector<std::shared_ptr<const AlphaTest>> opacity_alpha_tests(const TriangleMesh& mesh, const std::string& file,
+                                                                  const std::string& scene_file,
+                                                                  const std::string& json_path) {
+    constexpr double kOpacityCutoff = 0.5;
+    const std::filesystem::path path = resolved_mesh_path(file, scene_file);
+    const MeshFileProblem problem(path, scene_file, json_path);
+    std::vector<std::shared_ptr<const AlphaTest>> tests;
+    for (const std::string& map : mesh.opacity_maps) {
+        if (map.empty()) {
+            tests.push_back(nullptr);
+            continue;
+        }
+        const std::filesystem::path texture = (path.parent_path() / map).lexically_normal();
+        try {
+            const std::string bytes = file_bytes(texture.string());
+            tests.push_back(std::make_shared<const AlphaTest>(
+                AlphaTest{.texture = std::make_shared<const AlphaTexture>(
+                              decode_png_alpha(bytes, texture.string(), AlphaChannel::alpha_else_grey)),
+                          .factor = 1.0,
+                          .cutoff = kOpacityCutoff}));
+        } catch (const SceneError&) {
+            problem.refuse("map_d texture " + texture.string() + ": cannot open file");
+        } catch (const std::invalid_argument& bad) {
+            problem.refuse("map_d texture " + texture.string() + ": " + bad.what());
+        }
+    }
+    return tests;
+}
+
 std::string broken_faces_note(const std::string& file, std::size_t broken_faces) {
     if (broken_faces == 0) return "";
     const std::string faces = broken_faces == 1
@@ -107,15 +146,21 @@ std::string broken_faces_note(const std::string& file, std::size_t broken_faces)
 }
 
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path) {
-    const std::filesystem::path path = resolve(file, scene_file);
+    const std::filesystem::path path = resolved_mesh_path(file, scene_file);
     const MeshFileProblem problem(path, scene_file, json_path);
     TriangleMesh mesh;
     for (const NodeMesh& node : read_nodes(path, problem)) {
         const int base = static_cast<int>(mesh.vertices.size());
         mesh.vertices.insert(mesh.vertices.end(), node.mesh.vertices.begin(), node.mesh.vertices.end());
+        if (!node.mesh.surfaces.empty()) mesh.surfaces.resize(mesh.triangles.size());  // the nodes before had none
         for (const std::array<int, 3>& t : node.mesh.triangles)
             mesh.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+        if (!node.mesh.surfaces.empty())
+            mesh.surfaces.insert(mesh.surfaces.end(), node.mesh.surfaces.begin(), node.mesh.surfaces.end());
+        else if (!mesh.surfaces.empty())
+            mesh.surfaces.resize(mesh.triangles.size());
         mesh.broken_faces_dropped += node.mesh.broken_faces_dropped;
+        mesh.opacity_maps = node.mesh.opacity_maps;  // the file's, the same in every node
     }
     if (mesh.triangles.empty()) problem.refuse_empty(0);
     problem.check_placed_and_drop_degenerate(mesh);
@@ -125,7 +170,7 @@ TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scen
 
 std::vector<NodeMesh> load_node_meshes(const std::string& file, const std::string& scene_file,
                                        const std::string& json_path) {
-    const std::filesystem::path path = resolve(file, scene_file);
+    const std::filesystem::path path = resolved_mesh_path(file, scene_file);
     const MeshFileProblem problem(path, scene_file, json_path);
     std::vector<NodeMesh> nodes;
     std::size_t degenerate_dropped = 0;

@@ -1,17 +1,33 @@
 #pragma once
 // An indexed triangle mesh in an object's local space.
 #include <array>
+#include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 #include <glm/glm.hpp>
 
 #include "geometry/aabb.hpp"
+#include "scene/alpha_test.hpp"
 
 namespace shadowlab {
+
+// A triangle's material and its corners' texture coordinates (TEXCOORD_0, v up as Assimp gives it),
+// as the file gives them: what an alpha-tested material (scene/alpha_test.hpp) reads.
+struct TriangleSurface {
+    int material = -1;  // the file's material index; -1 for none
+    std::array<glm::dvec2, 3> uv{};
+};
 
 struct TriangleMesh {
     std::vector<glm::dvec3> vertices;
     std::vector<std::array<int, 3>> triangles;
+    // Per triangle, parallel to `triangles`; empty when no mesh of the file has texture coordinates
+    // (its triangles then have no surface to test: opaque).
+    std::vector<TriangleSurface> surfaces;
+    // Per material of the file (TriangleSurface::material): its opacity texture as the file names it
+    // (OBJ's map_d, relative to the file's folder), empty for none; empty when no material has one.
+    std::vector<std::string> opacity_maps;
     std::size_t degenerate_dropped = 0;    // the file's zero-area triangles, left out of `triangles`
     std::size_t broken_faces_dropped = 0;  // faces naming a vertex their mesh lacks (as Assimp read them)
 
@@ -30,6 +46,17 @@ struct TriangleMesh {
 // non-zero area. Faces naming a vertex beyond their mesh (as Assimp reads some PLY files) are left
 // out, counted, and said on stderr.
 TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scene_file, const std::string& json_path);
+
+// A mesh file's path: a relative one is relative to the directory of the scene file naming it.
+std::filesystem::path resolved_mesh_path(const std::string& file, const std::string& scene_file);
+
+// The alpha tests of the file's materials with an opacity texture (OBJ's map_d: a PNG beside the file,
+// its alpha channel or else its grey, kept at 0.5 and above; MTL has no cutoff), for
+// SceneObject::material_alpha; null for the others, none when no material has one. A texture that is
+// missing or not a PNG is a SceneError naming `json_path`, the mesh file and the texture.
+std::vector<std::shared_ptr<const AlphaTest>> opacity_alpha_tests(const TriangleMesh& mesh, const std::string& file,
+                                                                  const std::string& scene_file,
+                                                                  const std::string& json_path);
 
 // What was left out of a file's meshes, for the user: "FILE: 3 faces name a vertex their mesh lacks
 // (as Assimp reads them): left out" ("1 face names a vertex its mesh lacks"); empty when nothing

@@ -33,6 +33,7 @@
 #include "render/glsl_source.hpp"
 #include "render/projection_glsl.hpp"
 #include "render/program_uniforms.hpp"
+#include "render/stage_one_casters.hpp"
 #include "render/surface_shading.hpp"
 
 namespace shadowlab {
@@ -180,27 +181,6 @@ std::string paged_overlay(std::string text) {
     return paged(std::move(text),
                  {{"tint = w > 0.0 ? mix(shadowPalette[i], shadowPalette[i + 1], w) : shadowPalette[i];",
                    "tint = shadowPalette[shadowSelectedLevel % shadowMaxMaps];"}});
-}
-
-// Triangles as an actor whose vertices reach the shaders unchanged: stage 1 reads vertexMC as the
-// point in the setup's coordinates.
-vtkSmartPointer<vtkActor> triangles_actor(const WorldTriangles& triangles) {
-    vtkNew<vtkPoints> points;
-    for (const glm::dvec3& v : triangles.vertices) points->InsertNextPoint(v.x, v.y, v.z);
-    vtkNew<vtkCellArray> cells;
-    for (const std::array<int, 3>& t : triangles.triangles) {
-        const vtkIdType corners[3] = {t[0], t[1], t[2]};
-        cells->InsertNextCell(3, corners);
-    }
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetPolys(cells);
-    vtkNew<vtkOpenGLPolyDataMapper> mapper;
-    mapper->SetInputData(data);
-    mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    return actor;
 }
 
 // Whether every uniform was found. The results come in as arguments, so that every uniform is set
@@ -365,6 +345,25 @@ std::string glsl_constants() {
            real("shadowOverlayStrength", kOverlayStrength) + real("shadowTexelsLog2Range", kTexelsLog2Range);
 }
 
+// Stage 1 for an alpha-tested caster's actor: its texture coordinates passed on, its fragments tested
+// (glsl/caster_alpha.glsl) before anything else.
+void replace_alpha_test(std::string& vertex, std::string& fragment) {
+    vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
+                                 "//VTK::PositionVC::Dec\nin vec2 shadowCasterUv;\nout vec2 shadowCasterUvVSOutput;\n",
+                                 false);
+    vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Impl",
+                                 "//VTK::PositionVC::Impl\n  shadowCasterUvVSOutput = shadowCasterUv;\n", false);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + glsl("caster_alpha"), false);
+    vtkShaderProgram::Substitute(fragment, "//VTK::UniformFlow::Impl",
+                                 "//VTK::UniformFlow::Impl\n  if (!shadowCasterKept()) discard;\n", false);
+}
+
+bool set_alpha_test_uniforms(ProgramUniforms& program, const AlphaTest& alpha, int texture_unit) {
+    return program.SetUniformi("shadowCasterAlpha", texture_unit) &&
+           program.SetUniformf("shadowCasterAlphaFactor", static_cast<float>(alpha.factor)) &&
+           program.SetUniformf("shadowCasterAlphaCutoff", static_cast<float>(alpha.cutoff));
+}
+
 // Stage 2's switches: what picks one branch for every fragment alike, the filter, whether the
 // receiver's plane slopes its depth, and the overlay (none on a grey-level output). One general
 // program reads them as uniforms. The common case, a hard lookup with neither receiver plane nor
@@ -426,7 +425,7 @@ void ShadowMapPass::SetSetup(const ShadowSetup& setup, int resolution) {
     setup_ = setup;
     resolution_ = resolution;
     page_textures_current_ = false;
-    split_casters_per_map();
+    casters_per_map();
     Modified();
 }
 
@@ -452,18 +451,58 @@ void ShadowMapPass::SetCasters(const std::vector<vtkProp*>& casters) {
 void ShadowMapPass::SetCasterTriangles(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object) {
     caster_triangles_ = triangles;
     casts_per_object_ = casts_per_object;
-    split_casters_per_map();
+    casters_per_map();
     Modified();
 }
 
-// Once per setup, resolution and casters, not per frame: the split depends on nothing else.
-void ShadowMapPass::split_casters_per_map() {
-    split_casters_.assign(setup_.maps.size(), nullptr);
+// Once per setup, resolution and casters, not per frame: the split depends on nothing else. Alpha-tested
+// casters are drawn as triangles into every map, whose texture coordinates the props lack.
+void ShadowMapPass::casters_per_map() {
+    map_casters_.assign(setup_.maps.size(), {});
     if (caster_triangles_.triangles.empty()) return;
+    const std::vector<CasterActor> unsplit = caster_triangles_.alpha_tested()
+                                                 ? caster_actors(caster_triangles_, casts_per_object_)
+                                                 : std::vector<CasterActor>{};
     for (size_t i = 0; i < setup_.maps.size(); ++i)
-        if (splits_casters(setup_.maps[i]))
-            split_casters_[i] =
-                triangles_actor(split_casters(caster_triangles_, casts_per_object_, setup_.maps[i], resolution_));
+        map_casters_[i] =
+            splits_casters(setup_.maps[i])
+                ? caster_actors(split_casters(caster_triangles_, casts_per_object_, setup_.maps[i], resolution_),
+                                casts_per_object_)
+                : unsplit;
+}
+
+// Each alpha test's texture, made once per context, for the casters drawn as triangles and the
+// surfaces; those of tests no longer drawn let go.
+void ShadowMapPass::prepare_alpha_textures(vtkOpenGLRenderWindow* window) {
+    std::vector<std::shared_ptr<const AlphaTest>> drawn;
+    for (const std::vector<CasterActor>& actors : map_casters_)
+        for (const CasterActor& caster : actors) drawn.push_back(caster.alpha);
+    for (const CasterActor& surface : alpha_surfaces_) drawn.push_back(surface.alpha);
+    std::erase_if(alpha_textures_, [&](const auto& made) {
+        return made.second->GetContext() != window || std::find(drawn.begin(), drawn.end(), made.first) == drawn.end();
+    });
+    for (const std::shared_ptr<const AlphaTest>& test : drawn)
+        if (test && !alpha_texture(test.get())) alpha_textures_.emplace_back(test, alpha_texture_object(*test, window));
+}
+
+vtkTextureObject* ShadowMapPass::alpha_texture(const AlphaTest* test) const {
+    const auto made = std::find_if(alpha_textures_.begin(), alpha_textures_.end(),
+                                   [test](const auto& made) { return made.first.get() == test; });
+    return made != alpha_textures_.end() ? made->second.GetPointer() : nullptr;
+}
+
+const AlphaTest* ShadowMapPass::alpha_of(vtkProp* prop) const {
+    const auto holds = [prop](const CasterActor& caster) { return caster.actor.GetPointer() == prop; };
+    for (const std::vector<CasterActor>& actors : map_casters_)
+        if (auto found = std::find_if(actors.begin(), actors.end(), holds); found != actors.end())
+            return found->alpha.get();
+    const auto found = std::find_if(alpha_surfaces_.begin(), alpha_surfaces_.end(), holds);
+    return found != alpha_surfaces_.end() ? found->alpha.get() : nullptr;
+}
+
+void ShadowMapPass::SetAlphaTestedSurfaces(const std::vector<CasterActor>& surfaces) {
+    alpha_surfaces_ = surfaces;
+    Modified();
 }
 
 void ShadowMapPass::SetShadePass(vtkRenderPass* shade) {
@@ -495,6 +534,7 @@ void ShadowMapPass::Render(const vtkRenderState* s) {
     auto* window = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
     prepare_targets(window);
     if (paged()) prepare_page_textures(window);
+    prepare_alpha_textures(window);
     render_depth(s, window);
     if (lookup_.contact.on())
         render_camera_depth(s, window);
@@ -598,9 +638,9 @@ void ShadowMapPass::render_depth(const vtkRenderState* s, vtkOpenGLRenderWindow*
     gl->PopFramebufferBindings();
 }
 
-// One map's casters into its tile: the props, or the map's own split casters. Every map draws with
-// the same shader source, so nothing is rebuilt: the mappers call SetShaderParameters before each
-// draw, which sends drawn_map_.
+// One map's casters into its tile: the props, or the map's own casters as triangles (split, or alpha-
+// tested: each test's with its texture bound). Every map draws with the same shader source, so nothing
+// is rebuilt: the mappers call SetShaderParameters before each draw, which sends drawn_map_.
 void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map) {
     const Tile tile = tile_of(setup_.maps[map], resolution_);
     if (tile.width <= 0 || tile.height <= 0) return;  // a tile without texels: nothing to draw
@@ -610,15 +650,19 @@ void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenG
     if (clips) glEnable(GL_CLIP_DISTANCE0);  // behind its plane (a hemisphere's): cut, as the CPU rasterizer does
     const int mask_edges = static_cast<int>(setup_.maps[map].mask.size());
     for (int k = 0; k < mask_edges; ++k) glEnable(GL_CLIP_DISTANCE1 + k);  // outside its mask: cut likewise
-    if (vtkProp* split = split_casters_[map]) {
-        vtkRenderState split_state(depth_state->GetRenderer());
-        split_state.SetPropArrayAndCount(&split, 1);
-        split_state.SetFrameBuffer(depth_state->GetFrameBuffer());
-        PreRender(&split_state);  // the pass's shader replacements, for this prop too
-        depth_pass_->Render(&split_state);
-        PostRender(&split_state);
-    } else
-        depth_pass_->Render(depth_state);
+    for (const CasterActor& caster : map_casters_[map]) {
+        vtkProp* prop = caster.actor;
+        vtkRenderState caster_state(depth_state->GetRenderer());
+        caster_state.SetPropArrayAndCount(&prop, 1);
+        caster_state.SetFrameBuffer(depth_state->GetFrameBuffer());
+        vtkTextureObject* alpha = caster.alpha ? alpha_texture(caster.alpha.get()) : nullptr;
+        if (alpha) alpha->Activate();
+        PreRender(&caster_state);  // the pass's shader replacements, for this prop too
+        depth_pass_->Render(&caster_state);
+        PostRender(&caster_state);
+        if (alpha) alpha->Deactivate();
+    }
+    if (map_casters_[map].empty()) depth_pass_->Render(depth_state);
     if (clips) glDisable(GL_CLIP_DISTANCE0);
     for (int k = 0; k < mask_edges; ++k) glDisable(GL_CLIP_DISTANCE1 + k);
 }
@@ -647,6 +691,7 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
     s->GetRenderer()->GetTiledSizeAndOrigin(&width, &image_height_, &image_origin_.x, &image_origin_.y);
     enter(Stage::shade);
     depth_->Activate();
+    for (auto& [test, texture] : alpha_textures_) texture->Activate();  // each on a unit of its own
     if (paged()) {
         page_table_->Activate();
         page_slots_->Activate();
@@ -661,18 +706,21 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
         page_slots_->Deactivate();
         page_table_->Deactivate();
     }
+    for (auto& [test, texture] : alpha_textures_) texture->Deactivate();
     depth_->Deactivate();
 }
 
 bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment, vtkAbstractMapper*,
-                                           vtkProp*) {
+                                           vtkProp* prop) {
     if (stage_ == Stage::camera_depth) return true;  // VTK's own depth, as stage 2 rasterizes it
     const std::string projection = glsl_constants() + glsl("map_projection") + projection_glsl();
     if (stage_ == Stage::depth) {
         vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
                                      "//VTK::PositionVC::Dec\n" + projection + glsl("caster_depth"), false);
+        if (alpha_of(prop)) replace_alpha_test(vertex, fragment);
         return true;
     }
+    if (alpha_of(prop)) replace_alpha_test(vertex, fragment);
     pass_world_position(vertex);
     std::string declarations = projection + stage2_switches(lookup_, output_, overlay_).declarations() +
                                glsl("map_lookup", "depth_bias", "hash", "kernel_taps", "shadow_reader", "chebyshev",
@@ -701,12 +749,14 @@ bool ShadowMapPass::PostReplaceShaderValues(std::string& vertex, std::string&, s
     return true;
 }
 
-bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbstractMapper*, vtkProp*,
+bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbstractMapper*, vtkProp* prop,
                                         vtkOpenGLVertexArrayObject*) {
     if (stage_ == Stage::camera_depth) return true;
     ProgramUniforms program(shader_program);
     const DepthFormat& format = lookup_.format;
     if (stage_ == Stage::depth) {
+        if (const AlphaTest* alpha = alpha_of(prop))
+            if (!set_alpha_test_uniforms(program, *alpha, alpha_texture(alpha)->GetTextureUnit())) return false;
         // Pages: the drawn page alone, as map 0 (a setup of pages outgrows the arrays).
         const int drawn_map = paged() ? 0 : drawn_map_;
         MapArrays drawn =
@@ -722,6 +772,8 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbs
                        program.SetUniform4f("shadowDrawnViewport", glm::value_ptr(drawn.viewport[drawn_map])),
                        program.SetUniformi("shadowDepthZeroToOne", format.reversed));
     }
+    if (const AlphaTest* alpha = alpha_of(prop))
+        if (!set_alpha_test_uniforms(program, *alpha, alpha_texture(alpha)->GetTextureUnit())) return false;
     // Pages: the arrays the page selection fills are no uniforms; the others stay zero (linear maps).
     MapArrays maps = paged() ? MapArrays{} : map_arrays(setup_, resolution_);
     const bool unlit = output_ != Output::shaded;  // a grey level, white for lit: the lit mask or the visibility
@@ -741,8 +793,10 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbs
 void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {
     if (shade_) shade_->ReleaseGraphicsResources(w);
     depth_pass_->ReleaseGraphicsResources(w);
-    for (vtkActor* split : split_casters_)
-        if (split) split->ReleaseGraphicsResources(w);
+    for (const std::vector<CasterActor>& actors : map_casters_)
+        for (const CasterActor& caster : actors) caster.actor->ReleaseGraphicsResources(w);
+    for (auto& [test, texture] : alpha_textures_) texture->ReleaseGraphicsResources(w);
+    alpha_textures_.clear();
     if (fbo_) fbo_->ReleaseGraphicsResources(w);
     if (depth_) depth_->ReleaseGraphicsResources(w);
     if (colour_) colour_->ReleaseGraphicsResources(w);

@@ -26,7 +26,9 @@
 // visibility is multiplied by the march through it, as receiver_visibility multiplies. The shading mixes by 1 −
 // visibility (soft shadows shade by themselves), the lit mask thresholds the visibility at one half, as the CPU's
 // verdicts do. An overlay (render/map_overlay.hpp) may tint the result.
+#include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 #include <glm/glm.hpp>
 #include <vtkOpenGLRenderPass.h>
@@ -36,6 +38,7 @@
 #include "maps/shadow_map.hpp"
 #include "render/contact_depth_image.hpp"
 #include "render/map_overlay.hpp"
+#include "render/stage_one_casters.hpp"
 #include "render/surface_shading.hpp"
 #include "scene/light.hpp"
 #include "scene/tessellation.hpp"
@@ -80,6 +83,9 @@ public:
     // them split exactly as the CPU rasterizer splits them, instead of the props. Until they are given,
     // every map draws the props.
     void SetCasterTriangles(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object);
+    // Stage 2's alpha-tested surfaces (render/stage_one_casters.hpp: alpha_tested_surfaces), props of the
+    // renderer the shade pass draws: their fragments discarded where their test does not keep them.
+    void SetAlphaTestedSurfaces(const std::vector<CasterActor>& surfaces);
     void SetShadePass(vtkRenderPass* shade);
     void SetOutput(Output output);
     // What the shaded output paints over the shading (the lit mask never has an overlay); ramp: the
@@ -110,7 +116,11 @@ private:
     void render_map_depth(const vtkRenderState* depth_state, vtkOpenGLState* gl, int map);
     void render_camera_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
     void render_shaded(const vtkRenderState* s);
-    void split_casters_per_map();
+    void casters_per_map();
+    void prepare_alpha_textures(vtkOpenGLRenderWindow* window);
+    // The alpha test of one of map_casters_' or alpha_surfaces_' actors, or null.
+    const AlphaTest* alpha_of(vtkProp* prop) const;
+    vtkTextureObject* alpha_texture(const AlphaTest* test) const;
     void prepare_page_textures(vtkOpenGLRenderWindow* window);
     bool paged() const { return setup_.selection.rule == MapSelection::Rule::pages; }
 
@@ -131,7 +141,12 @@ private:
     std::vector<vtkProp*> casters_;
     WorldTriangles caster_triangles_;
     std::vector<bool> casts_per_object_;
-    std::vector<vtkSmartPointer<vtkActor>> split_casters_;  // per map: its casters split, or null: the props
+    // Per map: its casters as triangles (split, or alpha-tested: render/stage_one_casters.hpp), or none:
+    // the props. Each alpha test's texture, made once per context.
+    std::vector<std::vector<CasterActor>> map_casters_;
+    std::vector<CasterActor> alpha_surfaces_;
+    // Held by their tests (which a texture's test keeps alive: no other test can take its address).
+    std::vector<std::pair<std::shared_ptr<const AlphaTest>, vtkSmartPointer<vtkTextureObject>>> alpha_textures_;
     vtkSmartPointer<vtkRenderPass> shade_;
     vtkSmartPointer<vtkOpaquePass> depth_pass_;
     vtkSmartPointer<vtkOpenGLFramebufferObject> fbo_;

@@ -12,6 +12,7 @@
 #include <vtkRenderer.h>
 
 #include "render/shadow_map_pass.hpp"
+#include "render/stage_one_casters.hpp"
 #include "render/stencil_volume_pass.hpp"
 #include "views/space_parts.hpp"
 #include "views/view_parts.hpp"
@@ -36,13 +37,14 @@ std::vector<glm::vec3> texels_ramp() {
 }
 
 void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options, vtkActor* casters,
-                      const Light& light) {
+                      const std::vector<CasterActor>& alpha_surfaces, const Light& light) {
     vtkNew<ShadowMapPass> pass;
     pass->SetSetup(relative_to(in.setup, in.scene.camera.position), in.resolution);
     pass->SetLookup(in.lookup, light, glm::dvec3(0.0));  // the eye
     pass->SetCasters({casters});
     // Maps that split their casters (a paraboloid's max_sagitta_texels) draw these, split as the CPU does.
     pass->SetCasterTriangles(relative_to(in.triangles, in.scene.camera.position), in.casters);
+    pass->SetAlphaTestedSurfaces(alpha_surfaces);
     pass->SetShadePass(vtkNew<vtkRenderStepsPass>());
     pass->SetOutput(options.lit_mask ? ShadowMapPass::Output::lit_mask : ShadowMapPass::Output::shaded);
     pass->SetOverlay(options.overlay, texels_ramp());
@@ -122,6 +124,18 @@ void install_stencil_pass(vtkRenderer* renderer, const GeometryResult& technique
     renderer->SetPass(pass);
 }
 
+// The triangles without the alpha-tested ones, which alpha_tested_surfaces draws.
+WorldTriangles opaque_triangles(const WorldTriangles& triangles) {
+    if (!triangles.alpha_tested()) return triangles;
+    WorldTriangles out{.vertices = triangles.vertices, .triangles = {}, .object = {}, .alpha = {}};
+    for (std::size_t i = 0; i < triangles.triangles.size(); ++i)
+        if (!triangles.alpha[i].test) {
+            out.triangles.push_back(triangles.triangles[i]);
+            out.object.push_back(triangles.object[i]);
+        }
+    return out;
+}
+
 // Drawn in camera-relative coordinates (the eye at 0): VTK and the GPU passes work in float32, which
 // steps by 0.06 units a million units from the origin; near the eye it is as fine as anywhere.
 ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options) {
@@ -136,9 +150,15 @@ ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const 
     const std::vector<glm::dvec3> colours = object_colours(in.scene);
     std::vector<bool> not_casting(in.casters.size());
     for (size_t i = 0; i < in.casters.size(); ++i) not_casting[i] = !in.casters[i];
-    auto casters = actor_for(triangles_polydata(in.triangles, in.casters, colours, local_from_world), glm::dvec3(1.0));
-    auto others = actor_for(triangles_polydata(in.triangles, not_casting, colours, local_from_world), glm::dvec3(1.0));
-    for (vtkActor* actor : {casters.Get(), others.Get()}) {  // the passes shade them (render/surface_shading.hpp)
+    const WorldTriangles opaque = opaque_triangles(in.triangles);
+    auto casters = actor_for(triangles_polydata(opaque, in.casters, colours, local_from_world), glm::dvec3(1.0));
+    auto others = actor_for(triangles_polydata(opaque, not_casting, colours, local_from_world), glm::dvec3(1.0));
+    // A map method's pass tests the alpha-tested ones' fragments (drawn whole under a technique's).
+    const std::vector<CasterActor> alpha_surfaces =
+        alpha_tested_surfaces(relative_to(in.triangles, in.scene.camera.position), colours);
+    std::vector<vtkActor*> surfaces{casters.Get(), others.Get()};
+    for (const CasterActor& surface : alpha_surfaces) surfaces.push_back(surface.actor);
+    for (vtkActor* actor : surfaces) {  // the passes shade them (render/surface_shading.hpp)
         actor->GetProperty()->SetAmbient(0.35);
         actor->GetProperty()->SetDiffuse(0.75);
         actor->GetProperty()->BackfaceCullingOff();
@@ -147,7 +167,7 @@ ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const 
     place_scene_camera(renderer, camera);
     renderer->SetBackground(0.62, 0.74, 0.86);
     if (in.has_map()) {
-        install_map_pass(renderer, in, options, casters, light);
+        install_map_pass(renderer, in, options, casters, alpha_surfaces, light);
         if (!options.lit_mask) describe_overlay(renderer, in, options.overlay);
     } else
         install_stencil_pass(renderer, *in.geometry, options, origin, light);

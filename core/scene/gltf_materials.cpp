@@ -1,0 +1,144 @@
+#include "scene/gltf_materials.hpp"
+
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+
+#include "scene/file_bytes.hpp"
+#include "scene/png_alpha.hpp"
+
+namespace shadowlab {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kDefaultCutoff = 0.5;  // glTF's alphaCutoff, and BLEND's as read here
+
+// The images the materials name, each decoded once.
+class ImageReader {
+public:
+    ImageReader(const GltfFields& fields, const json& root, const std::string& file)
+        : fields_(fields), root_(root), folder_(std::filesystem::path(file).parent_path()) {}
+
+    // The alpha of the image that the texture `index` names (at `path`) samples.
+    std::shared_ptr<const AlphaTexture> texture(const json& index_value, const std::string& path) {
+        const json& textures = fields_.array(root_, "", "textures");
+        const std::size_t index = fields_.index(index_value, path, textures.size());
+        const std::string texture_path = indexed("textures", index);
+        const json& images = fields_.array(root_, "", "images");
+        const std::optional<std::size_t> source = fields_.index(textures[index], texture_path, "source", images.size());
+        if (!source) fields_.fail(texture_path + ".source", "required for an alpha-tested material, but missing");
+        std::shared_ptr<const AlphaTexture>& decoded = decoded_[*source];
+        if (!decoded)
+            decoded = std::make_shared<const AlphaTexture>(image(images[*source], indexed("images", *source)));
+        return decoded;
+    }
+
+private:
+    AlphaTexture image(const json& image, const std::string& path) const {
+        if (fields_.member(image, path, "uri")) {
+            const std::string uri = fields_.text(image, path, "uri");
+            if (uri.starts_with("data:"))
+                fields_.fail(path + ".uri", "a data: URI; ShadowLab reads images from files or buffer views");
+            return decoded(bytes_of(folder_ / uri, path + ".uri"), uri, path + ".uri");
+        }
+        const json& views = fields_.array(root_, "", "bufferViews");
+        const std::optional<std::size_t> view = fields_.index(image, path, "bufferView", views.size());
+        if (!view) fields_.fail(path, "neither a uri nor a bufferView");
+        return decoded(view_bytes(views[*view], indexed("bufferViews", *view)), path, path + ".bufferView");
+    }
+
+    // A buffer view's bytes: a range of its buffer's file.
+    std::string view_bytes(const json& view, const std::string& path) const {
+        const json& buffers = fields_.array(root_, "", "buffers");
+        const std::optional<std::size_t> buffer = fields_.index(view, path, "buffer", buffers.size());
+        if (!buffer) fields_.fail(path + ".buffer", "required, but missing");
+        const std::string buffer_path = indexed("buffers", *buffer);
+        if (!fields_.member(buffers[*buffer], buffer_path, "uri"))
+            fields_.fail(buffer_path, "a .glb's own binary chunk; ShadowLab reads images from files or buffer files");
+        const std::string uri = fields_.text(buffers[*buffer], buffer_path, "uri");
+        if (uri.starts_with("data:")) fields_.fail(buffer_path + ".uri", "a data: URI; ShadowLab reads buffer files");
+        const std::string bytes = bytes_of(folder_ / uri, buffer_path + ".uri");
+        const double offset = fields_.number(view, path, "byteOffset").value_or(0.0);
+        const double length = fields_.required_number(view, path, "byteLength");
+        const bool inside = offset >= 0.0 && length >= 0.0 && offset + length <= double(bytes.size());
+        if (!inside) fields_.fail(path, "bytes beyond its buffer's " + std::to_string(bytes.size()));
+        return bytes.substr(std::size_t(offset), std::size_t(length));
+    }
+
+    std::string bytes_of(const std::filesystem::path& file, const std::string& path) const {
+        try {
+            return file_bytes(file.string());
+        } catch (const SceneError&) {
+            fields_.fail(path, "cannot open " + file.string());
+        }
+    }
+
+    AlphaTexture decoded(const std::string& bytes, const std::string& name, const std::string& path) const {
+        try {
+            return decode_png_alpha(bytes, name);
+        } catch (const std::invalid_argument& problem) {
+            fields_.fail(path, name + ": " + problem.what());
+        }
+    }
+
+    const GltfFields& fields_;
+    const json& root_;
+    std::filesystem::path folder_;
+    std::map<std::size_t, std::shared_ptr<const AlphaTexture>> decoded_;
+};
+
+// The factor's alpha and the texture it multiplies, from pbrMetallicRoughness.
+AlphaTest base_colour_alpha(const GltfFields& fields, const json& material, const std::string& path,
+                            ImageReader& images) {
+    AlphaTest test;
+    const json* pbr = fields.member(material, path, "pbrMetallicRoughness");
+    if (!pbr) return test;
+    const std::string pbr_path = path + ".pbrMetallicRoughness";
+    if (const std::vector<double> factor = fields.numbers(*pbr, pbr_path, "baseColorFactor", 4); !factor.empty()) {
+        fields.expect(factor[3] >= 0.0 && factor[3] <= 1.0, pbr_path + ".baseColorFactor[3]", "an alpha in [0, 1]",
+                      factor[3]);
+        test.factor = factor[3];
+    }
+    const json* texture = fields.member(*pbr, pbr_path, "baseColorTexture");
+    if (!texture) return test;
+    const std::string texture_path = pbr_path + ".baseColorTexture";
+    const double coordinates = fields.number(*texture, texture_path, "texCoord").value_or(0.0);
+    fields.expect(coordinates == 0.0, texture_path + ".texCoord", "0 (ShadowLab reads TEXCOORD_0)", coordinates);
+    const json* index = fields.member(*texture, texture_path, "index");
+    if (!index) fields.fail(texture_path + ".index", "required, but missing");
+    test.texture = images.texture(*index, texture_path + ".index");
+    return test;
+}
+
+}  // namespace
+
+MaterialAlpha read_material_alpha(const GltfFields& fields, const json& root, const std::string& file) {
+    MaterialAlpha out;
+    ImageReader images(fields, root, file);
+    const json& materials = fields.array(root, "", "materials");
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const std::string path = indexed("materials", i);
+        const std::string mode =
+            fields.member(materials[i], path, "alphaMode") ? fields.text(materials[i], path, "alphaMode") : "OPAQUE";
+        if (mode == "OPAQUE") {
+            out.tests.push_back(nullptr);
+            continue;
+        }
+        if (mode != "MASK" && mode != "BLEND")
+            fields.fail(path + ".alphaMode", "expected \"OPAQUE\", \"MASK\" or \"BLEND\", got \"" + mode + "\"");
+        AlphaTest test = base_colour_alpha(fields, materials[i], path, images);
+        test.cutoff =
+            mode == "MASK" ? fields.number(materials[i], path, "alphaCutoff").value_or(kDefaultCutoff) : kDefaultCutoff;
+        fields.expect(test.cutoff >= 0.0, path + ".alphaCutoff", "a cutoff of 0 or more", test.cutoff);
+        if (mode == "BLEND") {
+            const std::string name =
+                fields.member(materials[i], path, "name") ? " \"" + fields.text(materials[i], path, "name") + "\"" : "";
+            out.notes.push_back({NoteKind::blend_read_as_mask, path + name + " casts as MASK at cutoff 0.5"});
+        }
+        out.tests.push_back(std::make_shared<const AlphaTest>(std::move(test)));
+    }
+    return out;
+}
+
+}  // namespace shadowlab
