@@ -13,6 +13,7 @@
 #include "scene/image_size.hpp"
 #include "scene/scene_loader.hpp"
 #include "views/offscreen_view.hpp"
+#include "views/space_parts.hpp"
 
 namespace shadowlab {
 namespace {
@@ -25,12 +26,15 @@ struct Picture {
 
 bool has_space(const Inspection& in, Space space) { return static_cast<bool>(in.trace.frame(space)); }
 
-// The view in which the method's own space is drawn: PPLS when the method warps, Light space when
+// The view in which the method's own space is drawn: PPLS when the method warps or its unit space
+// is an atlas (paraboloids, a tetrahedron's faces: the PPLS view draws the atlas), Light space when
 // it only fits a box (uniform, focused), the World view for a geometric technique.
 const View& view_of(const Inspection& in, Space space) {
     if (space == Space::world || space == Space::view) return view_or_throw("world");
     if (space == Space::ppls || space == Space::unit)
-        return view_or_throw(has_space(in, Space::ppls) ? "ppls" : has_space(in, Space::light) ? "light" : "world");
+        return view_or_throw(has_space(in, Space::ppls) || unit_space_is_an_atlas(in, space) ? "ppls"
+                             : has_space(in, Space::light)                                   ? "light"
+                                                                                             : "world");
     return view_or_throw(has_space(in, Space::light) ? "light" : "world");
 }
 
@@ -43,6 +47,8 @@ std::vector<Picture> pictures_of(const Inspection& in, size_t i) {
     std::vector<Picture> out;
     if (view == view_or_throw("world")) {
         out.push_back({&view, SpacePreset::orbit, "World"});
+    } else if (view == ppls && !has_space(in, Space::ppls)) {  // an atlas, seen straight on from any preset
+        out.push_back({&view, SpacePreset::orbit, "PPLS: the atlas"});
     } else {
         const bool warp_applied =
             view == ppls && std::none_of(steps.begin(), steps.begin() + i,

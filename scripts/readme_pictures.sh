@@ -64,6 +64,16 @@ x $shadowlab render data/scenes/lamp_room.json --method dpsm --set tessellate=0.
     --out $images/dpsm_camera_tessellated.png
 x $shadowlab render data/scenes/lamp_room.json --method cube --view shadowmap --size 640x360 --out $images/cube_atlas.png
 
+# Tetrahedron maps at 1024²: the four faces' triangles in the texture, the packing step, the face
+# serving each surface, and the Camera view without the faces' margin (false shadows along face 3's
+# edges) and with it.
+tetra="$shadowlab render data/scenes/lamp_room.json --method tetra --resolution 1024 --size 640x360"
+x $tetra --view shadowmap --out $images/tetra_atlas.png
+x $tetra --view ppls --step tetra-packing --out $images/tetra_packing.png
+x $tetra --view camera --overlay cascade --out $images/tetra_faces.png
+x $tetra --view camera --set margin=0 --out $images/tetra_camera_margin0.png
+x $tetra --view camera --out $images/tetra_camera.png
+
 # Soft shadows: hard, PCF and PCSS under a sun 2° wide; the signed error of PCF and PCSS against the
 # soft reference; VSM's blurred moments.
 x $shadowlab render data/scenes/box_on_plane.json --method psm --set bias_slope=0.25 --view error --error causes \

@@ -53,3 +53,26 @@ TEST(MatrixExport, JsonGivesTheMapsRowByRow) {
     EXPECT_EQ(json["method"], "lispsm");
     EXPECT_DOUBLE_EQ(json["maps"][0]["world_to_uvz"][3][2].get<double>(), setup.maps[0].world_to_uvz[2][3]);
 }
+
+// A tetrahedron's faces: each face's axis (the face_axis rule's) and its mask's half-planes exported
+// beside its matrix, read back to the setup's numbers, and the rule said in words.
+TEST(MatrixExport, FaceAxesAndMasksOfATetrahedronsFaces) {
+    const Method& method = *find_method("tetra");
+    const ShadowSetup setup =
+        method.compute_maps(gather_inputs(load_scene(shadowlab::testing::source_path("data/scenes/lamp_room.json"))),
+                            resolve_settings(method.name, method.settings, {}), nullptr);
+    ASSERT_EQ(setup.maps.size(), 4u);
+    const std::string glsl = export_matrices("tetra", setup, MatrixFormat::glsl);
+    const std::string hlsl = export_matrices("tetra", setup, MatrixFormat::hlsl);
+    EXPECT_NE(glsl.find("the largest dot with p - (0.0, 2.1"), std::string::npos) << glsl;
+    for (size_t i = 0; i < setup.maps.size(); ++i) {
+        const std::string n = std::to_string(i);
+        const std::vector<double> axis = numbers_between(glsl, "const vec3 faceAxis" + n + " = vec3(", ");");
+        ASSERT_EQ(axis.size(), 3u);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(axis[k], setup.maps[i].face_axis[k], 1e-8);
+        const std::vector<double> mask = numbers_between(hlsl, "static const float3 mask" + n + "[3] = {", "};");
+        ASSERT_EQ(mask.size(), 9u);
+        for (int k = 0; k < 9; ++k) EXPECT_NEAR(mask[k], setup.maps[i].mask[k / 3][k % 3], 1e-8);
+        EXPECT_NE(glsl.find("const vec3 mask" + n + "[3] = vec3[3](vec3("), std::string::npos);
+    }
+}

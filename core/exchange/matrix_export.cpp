@@ -1,5 +1,6 @@
 #include "exchange/matrix_export.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "exchange/inspection_json.hpp"
@@ -33,6 +34,24 @@ std::string parameter_names(const ProjectionKind& kind, const ShadowMap& map) {
     return out;
 }
 
+// A vec3 literal: GLSL's constructor or HLSL's initializer list.
+std::string vec3_text(const glm::dvec3& v, bool glsl) {
+    const std::string xyz = number(v.x) + ", " + number(v.y) + ", " + number(v.z);
+    return glsl ? "vec3(" + xyz + ")" : "{" + xyz + "}";
+}
+
+// The face_axis rule's axis and the mask's half-planes of a map that has them.
+std::string face_and_mask(const ShadowMap& map, const std::string& n, bool glsl) {
+    const std::string vec3 = glsl ? "const vec3 " : "static const float3 ";
+    std::string out;
+    if (map.face_axis != glm::dvec3(0.0)) out += vec3 + "faceAxis" + n + " = " + vec3_text(map.face_axis, glsl) + ";\n";
+    if (map.mask.empty()) return out;
+    const std::string count = std::to_string(map.mask.size());
+    out += vec3 + "mask" + n + "[" + count + "] = " + (glsl ? "vec3[" + count + "](" : "{");
+    for (size_t k = 0; k < map.mask.size(); ++k) out += (k ? ", " : "") + vec3_text(map.mask[k], glsl);
+    return out + (glsl ? ");\n" : "};\n");
+}
+
 }  // namespace
 
 std::string export_matrices(const std::string& method, const ShadowSetup& setup, MatrixFormat format) {
@@ -54,6 +73,14 @@ std::string export_matrices(const std::string& method, const ShadowSetup& setup,
     if (setup.maps.size() > 1)
         out += "// " + std::to_string(setup.maps.size()) + " maps, chosen " + to_string(setup.selection.rule) +
                "; viewportN = (u0, v0, u1, v1), the map's tile in the texture.\n";
+    if (setup.selection.rule == MapSelection::Rule::face_axis)
+        out += "// A point p reads the map whose faceAxisN has the largest dot with p - (" +
+               number(setup.selection.centre.x) + ", " + number(setup.selection.centre.y) + ", " +
+               number(setup.selection.centre.z) + "), the first on ties.\n";
+    if (std::any_of(setup.maps.begin(), setup.maps.end(), [](const ShadowMap& m) { return !m.mask.empty(); }))
+        out +=
+            "// maskN: half-planes (a, b, c) of the map's (u, v); its casters are drawn only where every\n"
+            "// a u + b v + c >= 0 (a clip distance of (a, b, c) . (u w, v w, w) each).\n";
     for (size_t i = 0; i < setup.maps.size(); ++i) {
         const std::string n = std::to_string(i);
         const ShadowMap& map = setup.maps[i];
@@ -66,7 +93,7 @@ std::string export_matrices(const std::string& method, const ShadowSetup& setup,
                               ");\n"
                         : "static const float4x4 worldToUvz" + n + " = {\n    " +
                               entries(map.world_to_uvz, false, ",\n    ") + "};\n";
-        out += scalar + "zBiasScale" + n + " = " + number(map.z_bias_scale) + ";\n";
+        out += scalar + "zBiasScale" + n + " = " + number(map.z_bias_scale) + ";\n" + face_and_mask(map, n, glsl);
         if (setup.maps.size() > 1)
             out += vec4 + "viewport" + n + (glsl ? " = vec4(" : " = {") + number(map.viewport.x) + ", " +
                    number(map.viewport.y) + ", " + number(map.viewport.z) + ", " + number(map.viewport.w) +

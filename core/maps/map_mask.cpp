@@ -6,8 +6,8 @@ namespace shadowlab {
 
 glm::dvec3 left_of(const glm::dvec2& from, const glm::dvec2& to) {
     const glm::dvec2 along = to - from;
-    const glm::dvec2 inward{-along.y, along.x};  // along turned a quarter counter-clockwise
-    return {inward.x, inward.y, -glm::dot(inward, from)};
+    const glm::dvec2 inward{-along.y, along.x};                // along turned a quarter counter-clockwise
+    return glm::dvec3(inward, -glm::dot(inward, from)) + 0.0;  // + 0: no -0 in the exports
 }
 
 bool in_mask(const ShadowMap& map, const glm::dvec2& uv) {
