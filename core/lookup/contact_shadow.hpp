@@ -16,7 +16,7 @@
 
 namespace shadowlab {
 
-// The most samples a march takes: the GPU pass's loop bound.
+// The most samples a march takes (contact_steps' range): each reads four pixels of the image.
 constexpr int kMaxContactSteps = 64;
 
 // The march: `steps` samples over `length` world units toward the light, each compared with the

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "methods/step_figures.hpp"
+
 namespace shadowlab {
 namespace {
 
@@ -47,7 +49,7 @@ std::vector<SettingSpec> contact_shadow_settings() {
             {.name = "contact_thickness",
              .description = "contact shadows: how deep a surface of the depth image is taken to be, world units (a "
                             "sample less than this behind it is occluded)",
-             .default_value = "0.1",
+             .default_value = label_number(defaults.thickness),
              .min = 0,
              .max = 1e30,
              .length_power = 1}};
