@@ -382,3 +382,20 @@ TEST(FenceScene, AMissingMapDIsOneLineNamingTheMeshAndTheTexture) {
         EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
     }
 }
+
+TEST(FenceScene, TheGeometricTechniquesNameTheirLimit) {
+    const MeasureContext context = prepare_measurement(load_scene(source_path(kFence)), 160, 90);
+    for (const char* name : {"volumes", "planar"}) {
+        const Method& technique = method_or_throw(name);
+        const Measurement m = measure(context, technique, resolve_settings(name, technique.settings, {}), 0, -1.0);
+        const auto whole = std::find_if(m.limits.begin(), m.limits.end(),
+                                        [](const Note& note) { return note.kind == NoteKind::alpha_tested_whole; });
+        ASSERT_NE(whole, m.limits.end()) << name << ": " << describe(m.limits);
+        EXPECT_EQ(whole->message, "2 alpha-tested caster triangles cast whole, holes and all");
+    }
+    const Scene opaque = load_scene(fence_with("opaque_limits.gltf", {{"alphaMode", "OPAQUE"}}));
+    const Method& volumes = method_or_throw("volumes");
+    const Measurement m = measure(prepare_measurement(opaque, 160, 90), volumes,
+                                  resolve_settings("volumes", volumes.settings, {}), 0, -1);
+    for (const Note& note : m.limits) EXPECT_NE(note.kind, NoteKind::alpha_tested_whole);
+}

@@ -62,6 +62,9 @@ const std::vector<NoteInfo>& all_note_kinds() {
         {not_planar_receiver, L, "only planar receivers", "planar shadows fall on planes only"},
         {below_plane, L, "casters below the plane", "they throw false shadows onto it"},
         {beyond_light, L, "casters beyond the light", "clipped at w = 0, else they throw anti-shadows"},
+        {alpha_tested_whole, L, "alpha-tested casters drawn whole",
+         "a technique's polygons carry no texture: alpha-tested casters (glTF MASK, OBJ map_d) cast through their "
+         "holes too; a map method tests their alpha"},
         {missed_receivers, L, "visible receivers outside the maps",
          "no map's [0,1]^3 holds them: their shadows are lost, they read as lit"},
         {casters_before_near_plane, L, "casters before the near plane",

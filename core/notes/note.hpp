@@ -49,6 +49,7 @@ enum class NoteKind {
     not_planar_receiver,
     below_plane,
     beyond_light,
+    alpha_tested_whole,
     // Limits of maps an engine computed (the custom method's coverage report).
     missed_receivers,
     casters_before_near_plane,

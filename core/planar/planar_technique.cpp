@@ -6,6 +6,7 @@
 #include "methods/step_figures.hpp"
 #include "planar/planar_projection.hpp"
 #include "techniques/pixel_footprint.hpp"
+#include "techniques/alpha_tested_limit.hpp"
 #include "techniques/technique_figures.hpp"
 
 namespace shadowlab {
@@ -149,6 +150,8 @@ GeometryResult compute_planar(const Scene& scene, const WorldTriangles& triangle
             result.shadowed, image, scene.camera);
     });
     result.limits = limits(r, below, beyond);
+    if (const std::optional<Note> whole = alpha_tested_limit(triangles, caster_flags(scene)))
+        result.limits.push_back(*whole);
     result.rule = StencilRule::cover;
     return result;
 }

@@ -441,7 +441,9 @@ std::vector<SceneObject> node_objects(const std::string& file, const MaterialAlp
         object.shape = Shape::mesh;
         object.mesh_file = file;
         object.mesh = std::make_shared<const TriangleMesh>(std::move(node.mesh));
-        object.material_alpha = materials.tests;
+        if (std::any_of(materials.tests.begin(), materials.tests.end(),
+                        [](const auto& test) { return test != nullptr; }))
+            object.material_alpha = materials.tests;
         objects.push_back(std::move(object));
     }
     return objects;

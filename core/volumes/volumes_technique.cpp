@@ -8,6 +8,7 @@
 
 #include "math/stopwatch.hpp"
 #include "methods/step_figures.hpp"
+#include "techniques/alpha_tested_limit.hpp"
 #include "techniques/technique_figures.hpp"
 #include "volumes/stencil_count.hpp"
 
@@ -250,6 +251,7 @@ GeometryResult compute_volumes(const Scene& scene, const WorldTriangles& triangl
         limits.push_back(Note{NoteKind::eye_in_volume,
                               "z-pass counts are off at " + std::to_string(wrong) +
                                   " pixels (the eye or the near plane is in a volume); count=zfail is right"});
+    if (const std::optional<Note> whole = alpha_tested_limit(triangles, caster_flags(scene))) limits.push_back(*whole);
     r.limits = std::move(limits);
     r.counts = std::move(counts);
     return r;
