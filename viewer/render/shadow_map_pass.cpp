@@ -667,8 +667,9 @@ void ShadowMapPass::render_map_depth(const vtkRenderState* depth_state, vtkOpenG
     for (int k = 0; k < mask_edges; ++k) glDisable(GL_CLIP_DISTANCE1 + k);
 }
 
-// Contact shadows: the renderer's opaque props from its camera, VTK's shaders unchanged, into the
-// camera's depth image that stage 2 marches in.
+// Contact shadows: the renderer's opaque props from its camera, VTK's shaders unchanged but for the
+// alpha-tested surfaces' test (as stage 2 discards them, and the CPU's rays pass their holes), into
+// the camera's depth image that stage 2 marches in.
 void ShadowMapPass::render_camera_depth(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
     if (!contact_image_) contact_image_.emplace();
     contact_image_->prepare(s->GetRenderer(), window);
@@ -678,9 +679,11 @@ void ShadowMapPass::render_camera_depth(const vtkRenderState* s, vtkOpenGLRender
     vtkRenderState camera_state(s->GetRenderer());
     camera_state.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
     camera_state.SetFrameBuffer(contact_image_->framebuffer());
+    for (auto& [test, texture] : alpha_textures_) texture->Activate();
     PreRender(&camera_state);
     depth_pass_->Render(&camera_state);
     PostRender(&camera_state);
+    for (auto& [test, texture] : alpha_textures_) texture->Deactivate();
     contact_image_->end_drawing(gl);
 }
 
@@ -712,7 +715,10 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
 
 bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment, vtkAbstractMapper*,
                                            vtkProp* prop) {
-    if (stage_ == Stage::camera_depth) return true;  // VTK's own depth, as stage 2 rasterizes it
+    if (stage_ == Stage::camera_depth) {  // VTK's own depth, as stage 2 rasterizes it: holes and all
+        if (alpha_of(prop)) replace_alpha_test(vertex, fragment);
+        return true;
+    }
     const std::string projection = glsl_constants() + glsl("map_projection") + projection_glsl();
     if (stage_ == Stage::depth) {
         vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
@@ -751,8 +757,11 @@ bool ShadowMapPass::PostReplaceShaderValues(std::string& vertex, std::string&, s
 
 bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbstractMapper*, vtkProp* prop,
                                         vtkOpenGLVertexArrayObject*) {
-    if (stage_ == Stage::camera_depth) return true;
     ProgramUniforms program(shader_program);
+    if (stage_ == Stage::camera_depth) {
+        const AlphaTest* alpha = alpha_of(prop);
+        return !alpha || set_alpha_test_uniforms(program, *alpha, alpha_texture(alpha)->GetTextureUnit());
+    }
     const DepthFormat& format = lookup_.format;
     if (stage_ == Stage::depth) {
         if (const AlphaTest* alpha = alpha_of(prop))

@@ -73,3 +73,19 @@ TEST(ContactShadowPass, GpuAgreesWithCpu) {
         EXPECT_LT(p.differing, p.compared / 200) << name;
     }
 }
+
+// Through an alpha-tested fence: the camera depth image the GPU marches in has the fence's holes, as
+// the CPU's (the reference's rays pass them) and the shaded image do; an image with the fence drawn
+// whole would hide the ground seen through the holes behind bars a thickness in front of it.
+TEST(ContactShadowPass, GpuAgreesWithCpuThroughAnAlphaTestedFence) {
+    Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/fence.gltf");
+    scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
+    const ContactParity p =
+        gpu_against_cpu_contact(scene, {{"contact_length", "1"}, {"contact_steps", "16"}, {"contact_thickness", "2"}});
+    std::cout << "fence: " << p.darkened << " pixels darkened by contact shadows, " << p.agreeing
+              << " of them on the GPU too; verdicts differ on " << p.differing << " of " << p.compared << " pixels\n";
+    ASSERT_GT(p.compared, kWidth * kHeight / 8u);
+    EXPECT_GT(p.darkened, 100u) << "the contact shadows darken the ground behind the bars";
+    EXPECT_GT(p.agreeing, 0.98 * p.darkened);
+    EXPECT_LT(p.differing, p.compared / 200);
+}
