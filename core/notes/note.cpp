@@ -50,6 +50,9 @@ const std::vector<NoteInfo>& all_note_kinds() {
         {blend_read_as_mask, F, "BLEND caster read as MASK",
          "a shadow map keeps one depth per texel, no partial coverage: a glTF material with alphaMode BLEND "
          "casts where its alpha is at least 0.5 and not elsewhere, in the maps, the GPU pass and the reference"},
+        {alpha_texture_missing, F, "alpha texture missing",
+         "an alpha-tested material's texture names a file that is not beside the model (textures left behind): "
+         "its casters are opaque, in the maps, the GPU pass and the reference"},
         {light_without_size, F, "a light without size",
          "PCSS sizes penumbrae by the light's radius or angular radius, here 0: hard shadows"},
         {search_clamped, F, "blocker search clamped",

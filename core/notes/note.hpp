@@ -39,6 +39,7 @@ enum class NoteKind {
     warp_loses,
     // Fallbacks of the scene's loading.
     blend_read_as_mask,
+    alpha_texture_missing,
     // Fallbacks of the lookups' filters.
     light_without_size,
     search_clamped,

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "scene/file_bytes.hpp"
@@ -22,19 +23,38 @@ public:
 
     // The alpha of the image that the texture `index` names (at `path`) samples.
     std::shared_ptr<const AlphaTexture> texture(const json& index_value, const std::string& path) {
+        const std::size_t source = source_of(index_value, path);
+        std::shared_ptr<const AlphaTexture>& decoded = decoded_[source];
+        if (!decoded)
+            decoded = std::make_shared<const AlphaTexture>(
+                image(fields_.array(root_, "", "images")[source], indexed("images", source)));
+        return decoded;
+    }
+
+    // The file the texture `index` names by its image's uri, where no such file is beside the model
+    // (its textures left behind); nullopt where it is there or the image lies in a buffer.
+    std::optional<std::string> missing_file(const json& index_value, const std::string& path) const {
+        const std::size_t source = source_of(index_value, path);
+        const std::string image_path = indexed("images", source);
+        const json& image = fields_.array(root_, "", "images")[source];
+        if (!fields_.member(image, image_path, "uri")) return std::nullopt;
+        const std::string uri = fields_.text(image, image_path, "uri");
+        if (uri.starts_with("data:") || std::filesystem::exists(folder_ / uri)) return std::nullopt;
+        return uri;
+    }
+
+private:
+    // The image the texture `index` samples.
+    std::size_t source_of(const json& index_value, const std::string& path) const {
         const json& textures = fields_.array(root_, "", "textures");
         const std::size_t index = fields_.index(index_value, path, textures.size());
         const std::string texture_path = indexed("textures", index);
         const json& images = fields_.array(root_, "", "images");
         const std::optional<std::size_t> source = fields_.index(textures[index], texture_path, "source", images.size());
         if (!source) fields_.fail(texture_path + ".source", "required for an alpha-tested material, but missing");
-        std::shared_ptr<const AlphaTexture>& decoded = decoded_[*source];
-        if (!decoded)
-            decoded = std::make_shared<const AlphaTexture>(image(images[*source], indexed("images", *source)));
-        return decoded;
+        return *source;
     }
 
-private:
     AlphaTexture image(const json& image, const std::string& path) const {
         if (fields_.member(image, path, "uri")) {
             const std::string uri = fields_.text(image, path, "uri");
@@ -88,6 +108,14 @@ private:
     std::map<std::size_t, std::shared_ptr<const AlphaTexture>> decoded_;
 };
 
+// The base colour texture's index, where the material has one.
+const json* base_colour_texture_index(const GltfFields& fields, const json& material, const std::string& path) {
+    const json* pbr = fields.member(material, path, "pbrMetallicRoughness");
+    const std::string pbr_path = path + ".pbrMetallicRoughness";
+    const json* texture = pbr ? fields.member(*pbr, pbr_path, "baseColorTexture") : nullptr;
+    return texture ? fields.member(*texture, pbr_path + ".baseColorTexture", "index") : nullptr;
+}
+
 // The factor's alpha and the texture it multiplies, from pbrMetallicRoughness.
 AlphaTest base_colour_alpha(const GltfFields& fields, const json& material, const std::string& path,
                             ImageReader& images) {
@@ -127,15 +155,23 @@ MaterialAlpha read_material_alpha(const GltfFields& fields, const json& root, co
         }
         if (mode != "MASK" && mode != "BLEND")
             fields.fail(path + ".alphaMode", "expected \"OPAQUE\", \"MASK\" or \"BLEND\", got \"" + mode + "\"");
+        const std::string name =
+            fields.member(materials[i], path, "name") ? " \"" + fields.text(materials[i], path, "name") + "\"" : "";
+        const json* texture = base_colour_texture_index(fields, materials[i], path);
+        if (const std::optional<std::string> missing =
+                texture ? images.missing_file(*texture, path + ".pbrMetallicRoughness.baseColorTexture.index")
+                        : std::nullopt) {
+            out.notes.push_back(
+                {NoteKind::alpha_texture_missing, path + name + ": " + *missing + " not found, opaque"});
+            out.tests.push_back(nullptr);
+            continue;
+        }
         AlphaTest test = base_colour_alpha(fields, materials[i], path, images);
         test.cutoff =
             mode == "MASK" ? fields.number(materials[i], path, "alphaCutoff").value_or(kDefaultCutoff) : kDefaultCutoff;
         fields.expect(test.cutoff >= 0.0, path + ".alphaCutoff", "a cutoff of 0 or more", test.cutoff);
-        if (mode == "BLEND") {
-            const std::string name =
-                fields.member(materials[i], path, "name") ? " \"" + fields.text(materials[i], path, "name") + "\"" : "";
+        if (mode == "BLEND")
             out.notes.push_back({NoteKind::blend_read_as_mask, path + name + " casts as MASK at cutoff 0.5"});
-        }
         out.tests.push_back(std::make_shared<const AlphaTest>(std::move(test)));
     }
     return out;
