@@ -127,10 +127,8 @@ table.causes td.number { text-align: right; white-space: nowrap; }
 .swatch { display: inline-block; width: 0.9em; height: 0.9em; margin-right: 0.4em; vertical-align: -0.1em; border: 1px solid #888; }
 </style>)";
 
-std::string page_head(const Inspection& in, const LessonOptions& o, MatrixLayout layout) {
-    return "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + html_escaped(in.title()) +
-           " step by step</title>" + kStyle + "</head><body>\n<h1>" + html_escaped(in.title()) +
-           " step by step</h1>\n<p>" + html_escaped(in.method->description) + "</p>\n<p>Scene <code>" +
+std::string page_intro(const Inspection& in, const LessonOptions& o, MatrixLayout layout) {
+    return "<h1>" + html_escaped(in.title()) + " step by step</h1>\n<p>" + html_escaped(in.method->description) + "</p>\n<p>Scene <code>" +
            html_escaped(o.scene_file) + "</code>, " + (in.has_map() ? std::to_string(in.resolution) + "² map. " : "") +
            "Matrices in " + layout_note(layout) + "; hover a matrix entry for all its digits.</p>\n" +
            (in.notes().empty() ? ""
@@ -168,15 +166,12 @@ std::string cause_row(const CauseCount& c) {
            " elsewhere (" + percent(c.remedy->misclassified, 3) + " misclassified after)</td></tr>";
 }
 
-// "What goes wrong": the run measured against the exact reference of the pictures' camera image,
-// its misclassified pixels ranked by cause (metrics/pixel_cause.hpp) with each cause's remedy
-// measured (metrics/diagnosis.hpp: what share of the cause it removes, what it adds elsewhere), and
-// the Error view coloured by cause over the same pixels.
-std::string what_goes_wrong(const Inspection& in, const LessonOptions& o, const std::filesystem::path& dir) {
-    const MeasureContext context = prepare_measurement(in.scene, o.width, o.height);
-    const Measurement run = measure(context, *in.method, in.settings, in.resolution, in.bias);
-    const Diagnosis d = diagnose(context, *in.method, in.settings, in.resolution, in.bias, run);
-    std::string html = "<section id=\"what-goes-wrong\"><h2>What goes wrong</h2>\n<p>";
+}  // namespace
+
+std::string what_goes_wrong_section(const Inspection& in, const MeasureContext& context, const Measurement& run,
+                                    const Diagnosis& d, const WrongPicture& picture) {
+    std::string html = "<section id=\"" + html_escaped(picture.id) + "\"><h2>" + html_escaped(picture.heading) +
+                       "</h2>\n<p>";
     const std::string judged = std::to_string(context.reference.width) + "x" + std::to_string(context.reference.height);
     if (d.causes.empty()) {
         html += "Against the exact reference of the " + judged + " camera image, no receiver pixel is misclassified.";
@@ -194,13 +189,36 @@ std::string what_goes_wrong(const Inspection& in, const LessonOptions& o, const 
         for (const CauseCount& c : d.causes) html += cause_row(c) + "\n";
         html += "</table>\n";
     }
-    const char* file = "what-goes-wrong-error-causes.png";
     const ViewOptions options{
         .width = context.reference.width, .height = context.reference.height, .error = ErrorShown::causes};
-    write_png(render_view(in, view_or_throw("error"), options, o.width, o.height), (dir / file).string());
-    return html + "<figure><img src=\"" + file + "\" width=\"" + std::to_string(o.width) +
+    write_png(render_view(in, view_or_throw("error"), options, picture.width, picture.height), picture.file.string());
+    const std::string file = picture.file.filename().string();
+    return html + "<figure><img src=\"" + file + "\" width=\"" + std::to_string(picture.width) +
            "\" alt=\"Error by cause\"><figcaption>Error, each misclassified pixel in its cause's colour</figcaption>"
            "</figure></section>\n";
+}
+
+std::string lesson_page(const std::string& title, const std::string& body) {
+    return "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + html_escaped(title) + "</title>" + kStyle +
+           "</head><body>\n" + body + "</body></html>\n";
+}
+
+namespace {
+
+// "What goes wrong": the run measured against the exact reference of the pictures' camera image,
+// its misclassified pixels ranked by cause (metrics/pixel_cause.hpp) with each cause's remedy
+// measured (metrics/diagnosis.hpp: what share of the cause it removes, what it adds elsewhere), and
+// the Error view coloured by cause over the same pixels.
+std::string what_goes_wrong(const Inspection& in, const LessonOptions& o, const std::filesystem::path& dir) {
+    const MeasureContext context = prepare_measurement(in.scene, o.width, o.height);
+    const Measurement run = measure(context, *in.method, in.settings, in.resolution, in.bias);
+    const Diagnosis d = diagnose(context, *in.method, in.settings, in.resolution, in.bias, run);
+    return what_goes_wrong_section(in, context, run, d,
+                                   {.id = "what-goes-wrong",
+                                    .heading = "What goes wrong",
+                                    .file = dir / "what-goes-wrong-error-causes.png",
+                                    .width = o.width,
+                                    .height = o.height});
 }
 
 }  // namespace
@@ -213,7 +231,7 @@ int run_lesson(const LessonOptions& o) {
     const std::filesystem::path dir(o.out);
     std::filesystem::create_directories(dir);
     const MatrixLayout layout = o.row_vectors ? MatrixLayout::row_vectors : MatrixLayout::column_vectors;
-    std::string html = page_head(in, o, layout);
+    std::string html = page_intro(in, o, layout);
     const std::vector<Step>& steps = in.trace.steps();
     int pictures = 0;
     for (size_t i = 0; i < steps.size(); ++i) {
@@ -237,9 +255,8 @@ int run_lesson(const LessonOptions& o) {
     }
     html += what_goes_wrong(in, o, dir);
     ++pictures;
-    html += "</body></html>\n";
     std::ofstream page(dir / "index.html");
-    page << html;
+    page << lesson_page(in.title() + " step by step", html);
     if (!page) throw std::runtime_error("cannot write " + (dir / "index.html").string());
     return pictures;
 }

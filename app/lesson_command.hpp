@@ -7,9 +7,12 @@
 // step the Camera, Shadow map and Error views. Then "What goes wrong": the run's misclassified
 // pixels ranked by cause, each cause's meaning and its remedy measured (what it removes, what it
 // adds), and the Error view coloured by cause.
+#include <filesystem>
 #include <map>
 #include <string>
 
+#include "metrics/diagnosis.hpp"
+#include "model/inspection.hpp"
 #include "scene_source.hpp"
 
 namespace shadowlab {
@@ -24,6 +27,19 @@ struct LessonOptions {
     bool row_vectors = false;       // matrices as the papers print them (the transpose of ours)
     std::string out;                // the directory; created if missing
 };
+
+// The "What goes wrong" section of a run measured on `context` (`run`, its `diagnosis`): its
+// misclassified pixels ranked by cause, each cause's meaning and measured remedy, and the Error view
+// by cause of `in` written to picture.file. `shadowlab compare` writes one per configuration.
+struct WrongPicture {
+    std::string id, heading;     // the section's HTML id and its title
+    std::filesystem::path file;  // the PNG written; the page refers to it by its file name
+    int width = 640, height = 400;
+};
+std::string what_goes_wrong_section(const Inspection& in, const MeasureContext& context, const Measurement& run,
+                                    const Diagnosis& diagnosis, const WrongPicture& picture);
+// A whole HTML page in the lesson's style around `body`.
+std::string lesson_page(const std::string& title, const std::string& body);
 
 // Writes the page and its pictures (needs X: xvfb-run); returns the number of pictures. Throws on
 // bad input, naming the option or the file.

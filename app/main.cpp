@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench_command.hpp"
+#include "compare_command.hpp"
 #include "filter_bench.hpp"
 #include "gui/inspector_app.hpp"
 #include "inspect_command.hpp"
@@ -205,6 +206,31 @@ int main(int argc, char** argv) {
     lesson_cmd->add_flag("--row-vectors", lesson.row_vectors, "matrices as the papers print them (row vectors)");
     lesson_cmd->add_option("--out,-o", lesson.out, "directory to write index.html and its pictures to")->required();
 
+    shadowlab::CompareOptions compare;
+    std::vector<std::string> compare_pairs, compare_pairs_a, compare_pairs_b;
+    std::string compare_size = "1280x720";
+    CLI::App* compare_cmd = app.add_subcommand(
+        "compare",
+        "two methods, or one method with two settings, against one exact reference: the difference image, the two "
+        "measures side by side and each one's lesson section (needs X: xvfb-run)");
+    compare_cmd->add_option("scene", compare.scene_file, scene_help)->required();
+    add_scene_source(compare_cmd, compare.scene_source);
+    compare_cmd->add_option("--methods", compare.methods, "A,B: two methods (" + method_help + "), the same one twice to "
+                                                          "compare settings")
+        ->delimiter(',')
+        ->required();
+    compare_cmd->add_option("--set", compare_pairs, "a setting of both, key=value (repeatable)");
+    compare_cmd->add_option("--set-a", compare_pairs_a, "a setting of A alone, over --set (repeatable)");
+    compare_cmd->add_option("--set-b", compare_pairs_b, "a setting of B alone, over --set (repeatable)");
+    compare_cmd->add_option("--resolution,-r", compare.resolution, "shadow map resolution")->capture_default_str();
+    compare_cmd->add_option("--size", compare_size, "camera image size WxH")->capture_default_str();
+    compare_cmd->add_option("--bias", compare.bias,
+                            "depth bias in world units along the light (default: slope-scaled per pixel)");
+    compare_cmd
+        ->add_option("--out,-o", compare.out,
+                     "directory to write difference.png, compare.json, compare.md and lesson.html to")
+        ->required();
+
     shadowlab::ShimmerOptions shimmer;
     std::vector<std::string> shimmer_pairs;
     std::string shimmer_size = "640x360";
@@ -255,6 +281,15 @@ int main(int argc, char** argv) {
             parse_size(lesson_size, lesson.width, lesson.height);
             const int pictures = shadowlab::run_lesson(lesson);
             std::cerr << "lesson: " << lesson.out << "/index.html and " << pictures << " pictures\n";
+            return 0;
+        }
+        if (app.got_subcommand(compare_cmd)) {
+            compare.settings = parse_settings(compare_pairs);
+            compare.settings_a = parse_settings(compare_pairs_a, "--set-a");
+            compare.settings_b = parse_settings(compare_pairs_b, "--set-b");
+            parse_size(compare_size, compare.width, compare.height);
+            shadowlab::run_compare(compare);
+            std::cerr << "compare: " << compare.out << "/difference.png, compare.json, compare.md, lesson.html\n";
             return 0;
         }
         if (app.got_subcommand(shimmer_cmd)) {

@@ -49,6 +49,7 @@
 #include "exchange/inspection_json.hpp"
 #include "maps/clip_conventions.hpp"
 #include "math/matrix.hpp"
+#include "views/difference_colours.hpp"
 
 using namespace shadowlab;
 using shadowlab::testing::settled;
@@ -583,6 +584,75 @@ private slots:
         selector->setCurrentIndex(selector->findData("lispsm"));
         QVERIFY(settled(*window_));
         QVERIFY2(same_pose(CameraPose::of(view_camera(light)), left_again), "another method moved the camera");
+    }
+
+    // View > Compare: A (lispsm) and B (focused) side by side. A camera change on either side moves
+    // both (the Camera view steers the one scene camera; an orbit of Light space is handed over), B
+    // draws A's step index where it has one and its last (with a note) where it has fewer steps, and
+    // the Difference view paints where their verdicts differ.
+    void compareModeHoldsBothPanelsOnOneCamera() {
+        window_->controls()->set_method("lispsm");
+        QVERIFY(settled(*window_));
+        window_->findChild<QAction*>("compareMode")->trigger();
+        window_->compared_controls()->set_method("focused");
+        QVERIFY(settled(*window_));
+        QVERIFY(window_->comparing());
+        const std::vector<ViewPanel*>& panels = window_->panels();
+        ViewPanel *a = panels[0], *b = window_->compared_panel();
+        QCOMPARE(b, panels[1]);
+        QCOMPARE(QString::fromStdString(a->view().name), QString("camera"));
+        QCOMPARE(QString::fromStdString(b->view().name), QString("camera"));
+        QCOMPARE(QString::fromStdString(panels[2]->view().name), QString("difference"));
+        QVERIFY(window_->compared());
+        QCOMPARE(QString::fromStdString(window_->inspection()->name()), QString("lispsm"));
+        QCOMPARE(QString::fromStdString(window_->compared()->name()), QString("focused"));
+
+        for (ViewPanel* moved : {b, a}) {  // the Camera view dragged on either side
+            const glm::dvec3 before = window_->inspection()->scene.camera.position;
+            auto* widget = moved->findChild<QVTKOpenGLNativeWidget*>();
+            drag(widget, {widget->width() / 2.0, widget->height() / 2.0}, {40, 15});
+            QVERIFY(settled(*window_));
+            const Camera &camera_a = window_->inspection()->scene.camera, &camera_b = window_->compared()->scene.camera;
+            QVERIFY2(glm::length(camera_a.position - before) > 1e-6, "the drag did not move the scene camera");
+            QVERIFY(glm::length(camera_a.position - camera_b.position) < 1e-12);
+            QVERIFY(glm::length(camera_a.target - camera_b.target) < 1e-12);
+            QVERIFY2(same_pose(CameraPose::of(view_camera(a)), CameraPose::of(view_camera(b))),
+                     "the two panels do not look through one camera");
+        }
+
+        size_t only_one_right = 0;  // the Difference panel: lispsm and focused disagree somewhere
+        const RgbImage difference = panels[2]->grab();
+        for (size_t i = 0; i < difference.rgb.size(); i += 3)
+            for (const difference_colours::Colour& c : {difference_colours::kOnlyARight, difference_colours::kOnlyBRight})
+                only_one_right += std::equal(c.begin(), c.end(), &difference.rgb[i]);
+        QVERIFY2(only_one_right > 0, "the Difference view paints no pixel where the verdicts differ");
+
+        // Light space in both: an orbit left in one is the other's, and the step index is linked.
+        for (ViewPanel* panel : {a, b}) {
+            panel->set_view(view_or_throw("light"));
+            emit panel->viewChosen();
+        }
+        QVERIFY(settled(*window_));
+        auto* widget = a->findChild<QVTKOpenGLNativeWidget*>();
+        drag(widget, {widget->width() / 2.0, widget->height() / 2.0}, {50, 20});
+        QVERIFY(settled(*window_));
+        QVERIFY2(same_pose(CameraPose::of(view_camera(a)), CameraPose::of(view_camera(b))),
+                 "an orbit of A's Light space left B's where it was");
+        const std::vector<Step>&steps_a = window_->inspection()->trace.steps(),
+              &steps_b = window_->compared()->trace.steps();
+        QVERIFY(steps_a.size() > steps_b.size() && steps_b.size() >= 3);
+        window_->steps()->choose(2);
+        QVERIFY(settled(*window_));
+        QCOMPARE(QString::fromStdString(window_->compared_step()), QString::fromStdString(steps_b[2].id));
+        window_->steps()->choose(static_cast<int>(steps_a.size()) - 1);
+        QVERIFY(settled(*window_));
+        QCOMPARE(QString::fromStdString(window_->compared_step()), QString());  // B's last
+        QVERIFY2(window_->last_message().contains("has no step"), qPrintable(window_->last_message()));
+
+        window_->findChild<QAction*>("compareMode")->trigger();  // off: the views before, one configuration
+        QVERIFY(settled(*window_));
+        QVERIFY(!window_->comparing() && !window_->compared());
+        QCOMPARE(QString::fromStdString(panels[2]->view().name), QString("light"));
     }
 
     // View > Before/after warp: Light space beside PPLS in the lower panels, both from the side.

@@ -93,18 +93,29 @@ void BackgroundInspection::run(const InspectionJob& job, std::uint64_t number) {
     for (const ShownView& shown : job.shown)
         prepared.emplace_back("preparing the " + shown.view->title + " view", &shown);
     if (job.diagnosis) prepared.emplace_back("diagnosing the misclassified pixels", &*job.diagnosis);
-    const int phases = 1 + static_cast<int>(prepared.size()) + (job.plot ? 1 : 0);
+    const int computed_first = job.compared ? 2 : 1;
+    const int phases = computed_first + static_cast<int>(prepared.size()) + (job.plot ? 1 : 0);
     try {
         enter_phase("computing " + job.request.method, 0, phases);
         Inspection computed = inspect_scene(job.scene, job.request);
         computed.pages_kept = kept_maps(job.before ? &job.before->setup : nullptr, computed.setup);
         auto inspection = std::make_shared<const Inspection>(std::move(computed));
+        std::shared_ptr<const Inspection> compared;
+        if (job.compared) {
+            if (superseded(number)) return;
+            enter_phase("computing B: " + job.compared->method, 1, phases);
+            compared = std::make_shared<const Inspection>(inspect_scene(job.scene, *job.compared));
+        }
         for (size_t i = 0; i < prepared.size(); ++i) {
             if (superseded(number)) return;
-            enter_phase(prepared[i].first, 1 + static_cast<int>(i), phases);
-            prepare_view(*inspection, *prepared[i].second->view, prepared[i].second->options);
+            enter_phase(prepared[i].first, computed_first + static_cast<int>(i), phases);
+            const ShownView& shown = *prepared[i].second;
+            const bool of_b = shown.of_compared && compared;
+            ViewOptions options = shown.options;
+            options.compared = of_b ? inspection : compared;  // the other configuration
+            prepare_view(of_b ? *compared : *inspection, *shown.view, options);
         }
-        deliver(number, [this, inspection] { emit landed(inspection); });
+        deliver(number, [this, inspection, compared] { emit landed(inspection, compared); });
         if (!job.plot || superseded(number)) return;
         enter_phase(plot_work(*job.plot), phases - 1, phases);
         auto plot = std::make_shared<const Plot>(measure_plot(*job.plot));

@@ -26,6 +26,7 @@ namespace shadowlab {
 struct ShownView {
     const View* view;
     ViewOptions options;
+    bool of_compared = false;  // drawn from the compared configuration (compare mode's B panel)
 };
 
 // One change of the window: the scene as it stands (the camera's aspect the one in force), the
@@ -34,6 +35,10 @@ struct ShownView {
 struct InspectionJob {
     Scene scene;
     InspectionRequest request;
+    // Compare mode: configuration B, inspected on the same scene after the request's (A); every
+    // panel's options then name the other configuration (ViewOptions::compared: the Difference view
+    // reads it), B for A's panels, A for B's.
+    std::optional<InspectionRequest> compared;
     std::vector<ShownView> shown;
     std::optional<ShownView> diagnosis;
     std::optional<PlotRequest> plot;
@@ -60,9 +65,10 @@ public:
     JobProgress progress() const;
 
 signals:
-    // Delivered on the GUI thread, for the newest job only: its inspection, then (measured after it
+    // Delivered on the GUI thread, for the newest job only: its inspection (and in compare mode B's,
+    // else null), then (measured after it
     // landed, as it takes longer) its plot, or why either failed.
-    void landed(std::shared_ptr<const Inspection> inspection);
+    void landed(std::shared_ptr<const Inspection> inspection, std::shared_ptr<const Inspection> compared);
     void plotted(std::shared_ptr<const Plot> plot);
     void failed(const QString& why);
 

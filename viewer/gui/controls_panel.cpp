@@ -134,6 +134,7 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     new QVBoxLayout(settings_box_);
 
     auto* general = new QFormLayout;
+    general_ = general;
     general->addRow("Method", method_);
     general->addRow("Map", resolution_);
     general->addRow("Bias", bias_);
@@ -141,6 +142,7 @@ ControlsPanel::ControlsPanel(QWidget* parent)
     general->addRow(camera_in_shadow_);
     general->addRow(shadow_only_);
     auto* light = new QGroupBox("Light direction", this);
+    light_box_ = light;
     auto* light_form = new QFormLayout(light);
     light_form->addRow("Azimuth", azimuth_);
     light_form->addRow("Elevation", elevation_);
@@ -167,6 +169,12 @@ ControlsPanel::ControlsPanel(QWidget* parent)
             light_label_->setText(QString("(%1, %2, %3)").arg(d.x, 0, 'f', 3).arg(d.y, 0, 'f', 3).arg(d.z, 0, 'f', 3));
             emit lightChanged();
         });
+}
+
+void ControlsPanel::show_the_run_only() {
+    for (QWidget* shared : {general_->labelForField(aspect_), static_cast<QWidget*>(aspect_),
+                            static_cast<QWidget*>(camera_in_shadow_), static_cast<QWidget*>(shadow_only_), light_box_})
+        shared->hide();
 }
 
 // The method's own settings, then its lookup's under two headers in the same form (its labels in

@@ -45,6 +45,9 @@ public:
     bool aspect_locked() const;     // the scene camera's aspect, as the CLI computes; else the Camera panel's
     bool shadow_only() const;       // the Camera view as a lit mask: white lit, black shadowed
     void clear_camera_in_shadow();  // without emitting cameraInShadowToggled()
+    // A second configuration's panel (the window's compare mode): the run alone, method, settings,
+    // resolution and bias; the light, the aspect and the toggles are the first panel's.
+    void show_the_run_only();
 
 signals:
     void changed();       // any setting
@@ -75,6 +78,8 @@ private:
     QCheckBox* camera_in_shadow_;
     QComboBox* aspect_;
     QCheckBox* shadow_only_;
+    QFormLayout* general_ = nullptr;  // method, map, bias, aspect and the toggles
+    QWidget* light_box_ = nullptr;
 };
 
 }  // namespace shadowlab

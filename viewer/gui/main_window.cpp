@@ -14,10 +14,14 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTime>
 #include <QTimer>
+#include <QToolBar>
+#include <algorithm>
+#include <array>
 #include <fstream>
 #include <vtkOpenGLRenderWindow.h>
 
@@ -79,6 +83,7 @@ MainWindow::MainWindow(QWidget* parent)
       plot_(new PlotPanel(this)),
       diagnosis_(new DiagnosisPanel(this)),
       messages_(new QPlainTextEdit(this)),
+      compared_controls_(new ControlsPanel(this)),
       resize_timer_(new QTimer(this)) {
     setWindowTitle("ShadowLab");
     const std::string& renderer = opengl_renderer();
@@ -128,6 +133,8 @@ MainWindow::MainWindow(QWidget* parent)
             });
             connect(panel, &ViewPanel::lightHandleMoved, this,
                     [this](const glm::dvec3& point) { move_light_to(point); });
+            connect(panel, &ViewPanel::orbitKept, this,
+                    [this, panel](const CameraPose& pose) { link_orbits(panel, pose); });
         }
         splitters_.push_back(row);
     }
@@ -150,6 +157,11 @@ MainWindow::MainWindow(QWidget* parent)
     addDockWidget(Qt::RightDockWidgetArea, diagnosis_dock_);  // under the steps
     diagnosis_dock_->hide();                                  // its error needs a reference traced: View > Diagnosis
     build_menus();
+    compared_controls_->setObjectName("comparedControls");
+    compared_controls_->show_the_run_only();
+    compare_dock_ = dock("Compare: B", "compareDock", scrolling(compared_controls_, this), this);
+    addDockWidget(Qt::LeftDockWidgetArea, compare_dock_);  // under the Controls: A above, B below
+    connect(compared_controls_, &ControlsPanel::changed, this, &MainWindow::recompute);
     if (software) message(QString::fromStdString("software OpenGL (" + renderer + "): multisampling off"), false);
     statusBar()->showMessage("drop a scene (.json) or a mesh (.obj, .ply, .stl, .gltf) here, or use File > Open");
 
@@ -188,6 +200,7 @@ MainWindow::MainWindow(QWidget* parent)
                 controls_->set_request(request);
             });
     restore_settings();
+    compare_dock_->hide();  // shown by compare mode alone, which starts off
 }
 
 void MainWindow::build_menus() {
@@ -227,6 +240,75 @@ void MainWindow::build_menus() {
     QAction* before_after = view->addAction("&Before/after warp", this, &MainWindow::show_before_after_warp);
     before_after->setObjectName("beforeAfterWarp");
     before_after->setToolTip("the lower panels: Light space and PPLS, both from the side");
+    compare_action_ = view->addAction("&Compare two configurations");
+    compare_action_->setObjectName("compareMode");
+    compare_action_->setCheckable(true);
+    compare_action_->setToolTip(
+        "A (the Controls) beside B (the Compare dock): one scene, camera and light, the same step, and the "
+        "Difference view: where their verdicts differ, who is right");
+    connect(compare_action_, &QAction::toggled, this, &MainWindow::set_compare_mode);
+    QToolBar* toolbar = addToolBar("Compare");
+    toolbar->setObjectName("compareToolBar");
+    toolbar->addAction(compare_action_);
+}
+
+void MainWindow::set_compare_mode(bool on) {
+    {
+        const QSignalBlocker quiet(compare_action_);
+        compare_action_->setChecked(on);
+    }
+    if (on == comparing()) return;
+    if (on) {
+        for (ViewPanel* panel : panels_) views_before_compare_.push_back(&panel->view());
+        {
+            const QSignalBlocker quiet(compared_controls_);
+            compared_controls_->set_request(controls_->request());  // B starts as A: change what to compare
+        }
+        const std::array<const char*, 3> compared_views{"camera", "camera", "difference"};
+        for (size_t i = 0; i < compared_views.size(); ++i) panels_[i]->set_view(view_or_throw(compared_views[i]));
+        panels_[0]->set_configuration("A");
+        panels_[1]->set_configuration("B");
+        compare_dock_->show();
+        compare_dock_->raise();
+        message("compare: panel A draws the Controls' configuration, panel B the Compare dock's", false);
+    } else {
+        for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->set_view(*views_before_compare_[i]);
+        for (ViewPanel* panel : panels_) panel->set_configuration("");
+        views_before_compare_.clear();
+        compared_.reset();
+        compare_dock_->hide();
+    }
+    recompute();
+    resize_timer_->start();  // the Camera view may have moved to another panel
+}
+
+bool MainWindow::comparing() const { return !views_before_compare_.empty(); }
+
+ViewPanel* MainWindow::compared_panel() const { return comparing() ? panels_[1] : nullptr; }
+
+std::optional<size_t> MainWindow::chosen_step_index() const {
+    const Inspection* a = session_.inspection();
+    const std::string chosen = steps_->chosen().toStdString();
+    if (!a || chosen.empty()) return std::nullopt;
+    const std::vector<Step>& steps = a->trace.steps();
+    const auto at = std::find_if(steps.begin(), steps.end(), [&](const Step& s) { return s.id == chosen; });
+    if (at == steps.end()) return std::nullopt;
+    return static_cast<size_t>(at - steps.begin());
+}
+
+std::string MainWindow::compared_step() const {
+    const std::optional<size_t> index = chosen_step_index();
+    if (!compared_ || !index || *index >= compared_->trace.steps().size()) return "";
+    return compared_->trace.steps()[*index].id;
+}
+
+// An orbit left in panel A or B moves the other's camera too, when it shows the same view.
+void MainWindow::link_orbits(ViewPanel* moved, const CameraPose& pose) {
+    if (!comparing()) return;
+    ViewPanel* other = moved == panels_[0] ? panels_[1] : moved == panels_[1] ? panels_[0] : nullptr;
+    if (!other || other->view() != moved->view()) return;
+    other->keep_camera(pose);
+    redraw(other);
 }
 
 bool MainWindow::open_file(const QString& path) {
@@ -325,8 +407,10 @@ void MainWindow::recompute() {
                       .plot = {},
                       .before = session_.shown()};
     job.scene.camera.aspect = aspect.aspect;
+    if (comparing()) job.compared = compared_controls_->request();
     for (ViewPanel* panel : panels_)
-        job.shown.push_back({&panel->view(), panel->options_for(view_options(), aspect.aspect)});
+        job.shown.push_back(
+            {&panel->view(), panel->options_for(view_options(), aspect.aspect), panel == compared_panel()});
     diagnosis_requested_ = diagnosis_dock_->isVisible();
     if (diagnosis_requested_) job.diagnosis = diagnosed_view(aspect.aspect);
     const Method* method = find_method(job.request.method);
@@ -353,7 +437,8 @@ void MainWindow::end_progress() {
 }
 
 // The newest change's inspection: every view redraws from it.
-void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
+void MainWindow::land(std::shared_ptr<const Inspection> inspection, std::shared_ptr<const Inspection> compared) {
+    compared_ = comparing() ? std::move(compared) : nullptr;
     if (!computing_->busy()) end_progress();  // else the plot is still measured: the timer ends it
     fit_messages(kIdleMessageLines);
     if (const std::optional<std::string> opened = session_.land(std::move(inspection))) {
@@ -375,6 +460,8 @@ void MainWindow::land(std::shared_ptr<const Inspection> inspection) {
         QString::fromStdString(shown.title() + " — " + what + " — " + told) +
         QString(" — aspect %1 from %2").arg(shown.scene.camera.aspect, 0, 'f', 2).arg(aspect_source_));
     if (!notes.empty()) message(QString::fromStdString(told), false);
+    if (compared_ && !compared_->notes().empty())
+        message(QString::fromStdString("B: " + compared_->name() + ": " + describe(compared_->notes())), false);
     diagnosis_prepared_ = diagnosis_requested_;  // the job that landed is the newest submitted
     redraw();
 }
@@ -440,10 +527,25 @@ ViewOptions MainWindow::view_options() const {
     return options;
 }
 
+// Panel B in compare mode draws B at A's step index (its last where it has fewer steps); every
+// panel's options name the other configuration (the Difference view's).
 void MainWindow::build_view_of(ViewPanel* panel) {
     if (!session_.inspection()) return;
+    const bool of_b = compared_ && panel == compared_panel();
+    ViewOptions options = view_options();
+    options.compared = of_b ? session_.shown() : compared_;
+    if (of_b) {
+        options.step = compared_step();
+        const std::optional<size_t> index = chosen_step_index();
+        if (index && *index >= compared_->trace.steps().size() && panel->view().interaction.draws_steps)
+            message(QString("B: %1 has no step %2 (it has %3): its last step shown")
+                        .arg(QString::fromStdString(compared_->name()))
+                        .arg(*index + 1)
+                        .arg(compared_->trace.steps().size()),
+                    false);
+    }
     try {
-        for (const std::string& note : panel->show(*session_.inspection(), view_options()).notes)
+        for (const std::string& note : panel->show(of_b ? *compared_ : *session_.inspection(), options).notes)
             message(QString::fromStdString(panel->view().title + ": " + note), false);
     } catch (const std::exception& e) {
         message(QString::fromStdString(e.what()), true);

@@ -15,6 +15,7 @@
 #include <QTemporaryDir>
 
 #include "gui/background_inspection.hpp"
+#include "gui/camera_pose.hpp"
 #include "exchange/matrix_export.hpp"
 #include "model/session.hpp"
 
@@ -74,6 +75,17 @@ public:
     DiagnosisPanel* diagnosis() const { return diagnosis_; }
     ScenePanel* scene_panel() const { return scene_panel_; }
     const std::vector<ViewPanel*>& panels() const { return panels_; }
+    // Compare mode (View > Compare, the toolbar's Compare): the first panel draws configuration A
+    // (the Controls'), the second configuration B (the Compare dock's), the third the Difference
+    // view; the scene, its camera and light are one, and B's panel draws A's step index.
+    void set_compare_mode(bool on);
+    bool comparing() const;
+    ControlsPanel* compared_controls() const { return compared_controls_; }
+    const Inspection* compared() const { return compared_.get(); }  // B's, drawn in compare mode
+    ViewPanel* compared_panel() const;                               // B's panel in compare mode, else nullptr
+    // The step B's panel draws: A's chosen step's index in B's trace, or B's last where it has fewer
+    // steps (empty: B's last).
+    std::string compared_step() const;
     QString last_message() const { return last_message_; }
 
 protected:
@@ -93,7 +105,9 @@ private:
     ViewPanel* camera_panel() const;  // the first panel whose view steers the scene camera (Camera), or nullptr
     void settle_resize();
     void recompute();
-    void land(std::shared_ptr<const Inspection> inspection);
+    void land(std::shared_ptr<const Inspection> inspection, std::shared_ptr<const Inspection> compared);
+    void link_orbits(ViewPanel* moved, const CameraPose& pose);
+    std::optional<size_t> chosen_step_index() const;  // A's chosen step in its trace; none: none chosen
     void fail(const QString& why);
     void show_progress();
     void end_progress();
@@ -139,6 +153,11 @@ private:
     bool diagnosis_prepared_ = false;   // ... and the inspection shown had it prepared
     QPlainTextEdit* messages_;
     std::vector<ViewPanel*> panels_;
+    QAction* compare_action_ = nullptr;
+    ControlsPanel* compared_controls_;
+    QDockWidget* compare_dock_ = nullptr;
+    std::shared_ptr<const Inspection> compared_;  // B's inspection, landed with A's
+    std::vector<const View*> views_before_compare_;  // the panels' views, back when compare mode ends
     std::vector<QSplitter*> splitters_;
     QMenu* recent_menu_ = nullptr;
     QTimer* resize_timer_;  // a resize recomputes or redraws once it settles, not on every step of a drag

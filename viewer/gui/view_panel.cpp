@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QImage>
+#include <QLabel>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <glm/gtc/type_ptr.hpp>
@@ -39,6 +40,7 @@ const char* preset_title(SpacePreset preset) {
 
 ViewPanel::ViewPanel(const View& initial, QWidget* parent)
     : QWidget(parent),
+      configuration_(new QLabel(this)),
       chooser_(new QComboBox(this)),
       error_(new QComboBox(this)),
       aliasing_(new QComboBox(this)),
@@ -99,6 +101,10 @@ ViewPanel::ViewPanel(const View& initial, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
     auto* choosers = new QHBoxLayout;
+    configuration_->setObjectName("configuration");
+    configuration_->setStyleSheet("font-weight: bold; padding: 0 6px");
+    configuration_->hide();
+    choosers->addWidget(configuration_);
     choosers->addWidget(chooser_, 1);
     choosers->addWidget(error_);
     choosers->addWidget(aliasing_);
@@ -139,6 +145,13 @@ void ViewPanel::set_preset(SpacePreset preset) {
 }
 
 void ViewPanel::forget_camera() { kept_camera_.reset(); }
+
+void ViewPanel::keep_camera(const CameraPose& pose) { kept_camera_ = pose; }
+
+void ViewPanel::set_configuration(const QString& label) {
+    configuration_->setText(label);
+    configuration_->setVisible(!label.isEmpty());
+}
 
 QSize ViewPanel::drawing_size() const { return widget_->size(); }
 
@@ -244,6 +257,7 @@ void ViewPanel::interaction_ended() {
     const ViewDrag drag = view().interaction.drag;
     if (drag == ViewDrag::orbits_kept) {
         kept_camera_ = CameraPose::of(c);
+        emit orbitKept(*kept_camera_);
         return;
     }
     if (drag != ViewDrag::steers_scene_camera) return;

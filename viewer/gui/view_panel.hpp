@@ -17,6 +17,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
 class vtkHandleWidget;
@@ -34,6 +35,11 @@ public:
     SpacePreset preset() const;
     void set_preset(SpacePreset preset);
     void forget_camera();        // the next redraw places the view's default camera (a new scene)
+    // The next redraws place this orbit, as if the user had left it (a view that keeps its orbit):
+    // the window's compare mode moves one panel's camera with the other's.
+    void keep_camera(const CameraPose& pose);
+    // Which configuration of compare mode the panel draws ("A", "B"), shown before its chooser; empty: none.
+    void set_configuration(const QString& label);
     QSize drawing_size() const;  // the VTK widget's, without the choosers
     // `options` completed by the panel's choosers and size, for a camera of `aspect`: what show draws with.
     ViewOptions options_for(const ViewOptions& options, double aspect) const;
@@ -59,6 +65,8 @@ signals:
     void lightHandleMoved(const glm::dvec3& point);
     void cameraHandleMoved(const glm::dvec3& position);
     void resized();  // the Camera view's aspect may follow the panel's shape
+    // The user left an orbit in a view that keeps it (ViewDrag::orbits_kept).
+    void orbitKept(const CameraPose& pose);
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
@@ -70,6 +78,7 @@ private:
     void letterbox(vtkRenderer* renderer, const Camera& camera);
 
     std::vector<vtkSmartPointer<vtkHandleWidget>> handles_;
+    QLabel* configuration_;  // compare mode's A or B
     QComboBox* chooser_;
     QComboBox* error_;     // the Error view: automatic, verdicts or the signed visibility error
     QComboBox* aliasing_;  // the Error view's heat map: m or one of its factors (verdicts only)

@@ -74,14 +74,6 @@ RgbImage paint_agreeing(const ShadowError& e, const ReferenceImage& ref, const s
     return image;
 }
 
-// The 3x3 block around pixel i, so that a lone pixel is seen.
-void fill_block(RgbImage& image, size_t i, const Rgb& colour) {
-    const int x = static_cast<int>(i % image.width), y = static_cast<int>(i / image.width);
-    for (int ny = std::max(0, y - 1); ny <= std::min(image.height - 1, y + 1); ++ny)
-        for (int nx = std::max(0, x - 1); nx <= std::min(image.width - 1, x + 1); ++nx)
-            std::copy(colour.begin(), colour.end(), image.at(nx, ny));
-}
-
 // Each misclassified pixel as a 3x3 block of its kind's colour; false light drawn last, on top.
 void mark_misclassified(RgbImage& image, const ShadowError& e) {
     for (const auto& [kind, colour] : {std::pair{PixelVerdict::false_shadow, colours::kFalseShadow},

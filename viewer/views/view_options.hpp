@@ -2,6 +2,7 @@
 // What a view is asked to draw beyond the inspection: the trace step, and each chooser's choice
 // (the window's panels set them, `shadowlab render` from its flags). A view reads those its
 // descriptor names (views/view.hpp, ViewChoosers).
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,6 +59,9 @@ struct ViewOptions {
     AliasingShown aliasing = AliasingShown::total;  // error view: the heat map's quantity
     ErrorShown error = ErrorShown::automatic;       // error view: verdicts, signed visibility error or causes
     TextureShown texture = TextureShown::depth;     // shadow map view: depth or the moments VSM reads
+    // Difference view: the other configuration of compare mode (B, the inspection drawn being A),
+    // judged against the same reference. None: the view says how to give it one.
+    std::shared_ptr<const Inspection> compared;
 };
 
 // What a view could not draw, for the window's status line: "12 triangles behind w = 0 left out".

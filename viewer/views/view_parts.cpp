@@ -95,4 +95,11 @@ Rgb heat(double t) {
     return out;
 }
 
+void fill_block(RgbImage& image, size_t i, const Rgb& colour) {
+    const int x = static_cast<int>(i % image.width), y = static_cast<int>(i / image.width);
+    for (int ny = std::max(0, y - 1); ny <= std::min(image.height - 1, y + 1); ++ny)
+        for (int nx = std::max(0, x - 1); nx <= std::min(image.width - 1, x + 1); ++nx)
+            std::copy(colour.begin(), colour.end(), image.at(nx, ny));
+}
+
 }  // namespace shadowlab

@@ -24,6 +24,7 @@ View texels_view();
 View error_view();
 View stencil_view();
 View page_table_view();  // page_table_view.cpp
+View difference_view();
 
 // The camera image the Error view judges (a technique's own; for a map, options.width x height).
 glm::ivec2 judged_image_size(const Inspection& in, const ViewOptions& options);
@@ -64,5 +65,7 @@ void style_overlay_text(vtkTextProperty* text, int size, const glm::dvec3& colou
 std::string map_name(const ShadowSetup& setup, size_t i);
 using Rgb = std::array<unsigned char, 3>;
 Rgb heat(double t);  // an inferno-like ramp over t in [0, 1]
+// The 3x3 block around pixel i (row-major), so that a lone pixel is seen (the Error and Difference views).
+void fill_block(RgbImage& image, size_t i, const Rgb& colour);
 
 }  // namespace shadowlab
