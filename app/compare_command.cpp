@@ -48,8 +48,9 @@ Configuration configured(const std::string& label, const std::string& method_nam
 
 void check(const CompareOptions& o) {
     if (o.methods.size() != 2)
-        throw std::invalid_argument("--methods: expected two methods A,B (the same one twice to compare settings), got " +
-                                    std::to_string(o.methods.size()));
+        throw std::invalid_argument(
+            "--methods: expected two methods A,B (the same one twice to compare settings), got " +
+            std::to_string(o.methods.size()));
     if (o.out.empty()) throw std::invalid_argument("--out: a directory is required");
     limits::check(limits::map_resolution, "--resolution", o.resolution);
 }
@@ -107,10 +108,11 @@ std::string markdown_table(const Configuration& a, const Configuration& b, const
     md += row("notes", a.run.notes().empty() ? "none" : describe(a.run.notes()),
               b.run.notes().empty() ? "none" : describe(b.run.notes()));
     md += "\n| where | pixels | share |\n|---|---|---|\n";
-    for (const auto& [name, pixels] : {std::pair{"both right", c.both_right}, std::pair{"both wrong", c.both_wrong},
-                                       std::pair{"only A right", c.only_a_right},
-                                       std::pair{"only B right", c.only_b_right}})
-        md += row(name, std::to_string(pixels), percent(double(pixels) / double(std::max<size_t>(c.receiver_pixels, 1))));
+    for (const auto& [name, pixels] :
+         {std::pair{"both right", c.both_right}, std::pair{"both wrong", c.both_wrong},
+          std::pair{"only A right", c.only_a_right}, std::pair{"only B right", c.only_b_right}})
+        md +=
+            row(name, std::to_string(pixels), percent(double(pixels) / double(std::max<size_t>(c.receiver_pixels, 1))));
     return md + "\n![Difference](difference.png)\n";
 }
 
@@ -157,18 +159,18 @@ Json run_compare(const CompareOptions& o) {
     const Inspection in_a = inspected(context, a, o), in_b = inspected(context, b, o);
     ViewOptions difference{.width = context.reference.width, .height = context.reference.height};
     difference.compared = std::make_shared<const Inspection>(in_b);
-    write_png(render_view(in_a, view_or_throw("difference"), difference, context.reference.width,
-                          context.reference.height),
-              (dir / "difference.png").string());
+    write_png(
+        render_view(in_a, view_or_throw("difference"), difference, context.reference.width, context.reference.height),
+        (dir / "difference.png").string());
     std::string lesson = "<h1>" + a.method->name + " (A) against " + b.method->name + " (B)</h1>\n";
     for (const auto& [c, in] : {std::pair{&a, &in_a}, std::pair{&b, &in_b}})
-        lesson += what_goes_wrong_section(*in, context, c->run, c->diagnosis,
-                                          {.id = "what-goes-wrong-" + c->label,
-                                           .heading = c->label + ": " + c->method->name + " (" + given(c->overrides) +
-                                                      "): what goes wrong",
-                                           .file = dir / ("error-causes-" + c->label + ".png"),
-                                           .width = context.reference.width,
-                                           .height = context.reference.height});
+        lesson += what_goes_wrong_section(
+            *in, context, c->run, c->diagnosis,
+            {.id = "what-goes-wrong-" + c->label,
+             .heading = c->label + ": " + c->method->name + " (" + given(c->overrides) + "): what goes wrong",
+             .file = dir / ("error-causes-" + c->label + ".png"),
+             .width = context.reference.width,
+             .height = context.reference.height});
     write_text(dir / "lesson.html", lesson_page("compare: " + a.method->name + " against " + b.method->name, lesson));
     return json;
 }

@@ -19,8 +19,8 @@ namespace shadowlab {
 struct CompareOptions {
     std::string scene_file;
     SceneSource scene_source;
-    std::vector<std::string> methods;                         // exactly two: A, B (may be the same)
-    std::map<std::string, std::string> settings;              // both configurations
+    std::vector<std::string> methods;                           // exactly two: A, B (may be the same)
+    std::map<std::string, std::string> settings;                // both configurations
     std::map<std::string, std::string> settings_a, settings_b;  // one each, over `settings`
     int resolution = 1024;
     int width = 1280, height = 720;

@@ -128,9 +128,10 @@ table.causes td.number { text-align: right; white-space: nowrap; }
 </style>)";
 
 std::string page_intro(const Inspection& in, const LessonOptions& o, MatrixLayout layout) {
-    return "<h1>" + html_escaped(in.title()) + " step by step</h1>\n<p>" + html_escaped(in.method->description) + "</p>\n<p>Scene <code>" +
-           html_escaped(o.scene_file) + "</code>, " + (in.has_map() ? std::to_string(in.resolution) + "² map. " : "") +
-           "Matrices in " + layout_note(layout) + "; hover a matrix entry for all its digits.</p>\n" +
+    return "<h1>" + html_escaped(in.title()) + " step by step</h1>\n<p>" + html_escaped(in.method->description) +
+           "</p>\n<p>Scene <code>" + html_escaped(o.scene_file) + "</code>, " +
+           (in.has_map() ? std::to_string(in.resolution) + "² map. " : "") + "Matrices in " + layout_note(layout) +
+           "; hover a matrix entry for all its digits.</p>\n" +
            (in.notes().empty() ? ""
                                : "<p><b>" + std::string(in.has_map() ? "Fallback" : "Limits") + ":</b> " +
                                      html_escaped(describe(in.notes())) + "</p>\n");
@@ -170,8 +171,8 @@ std::string cause_row(const CauseCount& c) {
 
 std::string what_goes_wrong_section(const Inspection& in, const MeasureContext& context, const Measurement& run,
                                     const Diagnosis& d, const WrongPicture& picture) {
-    std::string html = "<section id=\"" + html_escaped(picture.id) + "\"><h2>" + html_escaped(picture.heading) +
-                       "</h2>\n<p>";
+    std::string html =
+        "<section id=\"" + html_escaped(picture.id) + "\"><h2>" + html_escaped(picture.heading) + "</h2>\n<p>";
     const std::string judged = std::to_string(context.reference.width) + "x" + std::to_string(context.reference.height);
     if (d.causes.empty()) {
         html += "Against the exact reference of the " + judged + " camera image, no receiver pixel is misclassified.";

@@ -215,8 +215,11 @@ int main(int argc, char** argv) {
         "measures side by side and each one's lesson section (needs X: xvfb-run)");
     compare_cmd->add_option("scene", compare.scene_file, scene_help)->required();
     add_scene_source(compare_cmd, compare.scene_source);
-    compare_cmd->add_option("--methods", compare.methods, "A,B: two methods (" + method_help + "), the same one twice to "
-                                                          "compare settings")
+    compare_cmd
+        ->add_option("--methods", compare.methods,
+                     "A,B: two methods (" + method_help +
+                         "), the same one twice to "
+                         "compare settings")
         ->delimiter(',')
         ->required();
     compare_cmd->add_option("--set", compare_pairs, "a setting of both, key=value (repeatable)");
@@ -262,12 +265,17 @@ int main(int argc, char** argv) {
     gui_cmd->add_option("scene", gui.scene_file, "scene (JSON) or mesh file")->capture_default_str();
     gui_cmd->add_option("--screenshot", gui.screenshot, "write the window to this PNG once drawn, then quit");
     gui_cmd->add_option("--size", gui_size, "window size WxH")->capture_default_str();
+    gui_cmd
+        ->add_option("--compare", gui.compare, "A,B: open in compare mode, method A beside method B (View > Compare)")
+        ->delimiter(',')
+        ->expected(2);
 
     try {
         app.parse(argc, argv);
         const bool no_subcommand = app.get_subcommands().empty();
         if (app.got_subcommand(gui_cmd) || (no_subcommand && std::getenv("DISPLAY"))) {
             parse_size(gui_size, gui.width, gui.height);
+            for (const std::string& method : gui.compare) shadowlab::method_or_throw(method);
             return shadowlab::run_inspector(argc > 0 ? 1 : 0, argv, gui);
         }
         if (app.got_subcommand(render_cmd)) {

@@ -38,7 +38,8 @@ size_t pixels_of(double share, size_t receiver_pixels) {
 
 TEST(VerdictComparison, EachPixelFallsInItsClassByHand) {
     using V = PixelVerdict;
-    const ShadowError a = with_verdicts({V::none, V::agree, V::agree, V::false_shadow, V::false_light, V::false_shadow});
+    const ShadowError a =
+        with_verdicts({V::none, V::agree, V::agree, V::false_shadow, V::false_light, V::false_shadow});
     const ShadowError b = with_verdicts({V::none, V::agree, V::false_light, V::agree, V::false_light, V::false_shadow});
     const VerdictComparison c = compare_verdicts(a, b);
     EXPECT_EQ(c.receiver_pixels, 5u);

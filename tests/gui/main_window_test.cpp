@@ -623,7 +623,8 @@ private slots:
         size_t only_one_right = 0;  // the Difference panel: lispsm and focused disagree somewhere
         const RgbImage difference = panels[2]->grab();
         for (size_t i = 0; i < difference.rgb.size(); i += 3)
-            for (const difference_colours::Colour& c : {difference_colours::kOnlyARight, difference_colours::kOnlyBRight})
+            for (const difference_colours::Colour& c :
+                 {difference_colours::kOnlyARight, difference_colours::kOnlyBRight})
                 only_one_right += std::equal(c.begin(), c.end(), &difference.rgb[i]);
         QVERIFY2(only_one_right > 0, "the Difference view paints no pixel where the verdicts differ");
 

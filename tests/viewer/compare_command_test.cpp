@@ -59,8 +59,8 @@ TEST(CompareCommand, WritesItsFilesWithEachRunsMeasure) {
     const CompareOptions options = focused_against_lispsm("files");
     std::filesystem::remove_all(options.out);
     const Json json = run_compare(options);
-    for (const char* file : {"difference.png", "compare.json", "compare.md", "lesson.html", "error-causes-A.png",
-                             "error-causes-B.png"})
+    for (const char* file :
+         {"difference.png", "compare.json", "compare.md", "lesson.html", "error-causes-A.png", "error-causes-B.png"})
         EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(options.out) / file)) << file;
 
     // Each side is what `measure --json` prints for its method on the same image and resolution.

@@ -5,6 +5,7 @@
 #include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
 
+#include "gui/controls_panel.hpp"
 #include "gui/main_window.hpp"
 #include "render/x_display.hpp"
 
@@ -21,6 +22,11 @@ int run_inspector(int argc, char** argv, const InspectorOptions& options) {
     window.show();
     QApplication::processEvents();  // lay out first: the panels draw at their size
     window.open_file(QString::fromStdString(options.scene_file));
+    if (options.compare.size() == 2) {
+        window.controls()->set_method(QString::fromStdString(options.compare[0]));
+        window.set_compare_mode(true);
+        window.compared_controls()->set_method(QString::fromStdString(options.compare[1]));
+    }
     QTimer settled;  // the screenshot once the scene is computed and every panel drawn
     if (!options.screenshot.empty()) {
         settled.setInterval(100);

@@ -82,7 +82,7 @@ public:
     bool comparing() const;
     ControlsPanel* compared_controls() const { return compared_controls_; }
     const Inspection* compared() const { return compared_.get(); }  // B's, drawn in compare mode
-    ViewPanel* compared_panel() const;                               // B's panel in compare mode, else nullptr
+    ViewPanel* compared_panel() const;                              // B's panel in compare mode, else nullptr
     // The step B's panel draws: A's chosen step's index in B's trace, or B's last where it has fewer
     // steps (empty: B's last).
     std::string compared_step() const;
@@ -156,7 +156,7 @@ private:
     QAction* compare_action_ = nullptr;
     ControlsPanel* compared_controls_;
     QDockWidget* compare_dock_ = nullptr;
-    std::shared_ptr<const Inspection> compared_;  // B's inspection, landed with A's
+    std::shared_ptr<const Inspection> compared_;     // B's inspection, landed with A's
     std::vector<const View*> views_before_compare_;  // the panels' views, back when compare mode ends
     std::vector<QSplitter*> splitters_;
     QMenu* recent_menu_ = nullptr;

@@ -34,7 +34,7 @@ public:
     void set_view(const View& view);
     SpacePreset preset() const;
     void set_preset(SpacePreset preset);
-    void forget_camera();        // the next redraw places the view's default camera (a new scene)
+    void forget_camera();  // the next redraw places the view's default camera (a new scene)
     // The next redraws place this orbit, as if the user had left it (a view that keeps its orbit):
     // the window's compare mode moves one panel's camera with the other's.
     void keep_camera(const CameraPose& pose);

@@ -84,6 +84,8 @@ void add_agreement_legend(vtkRenderer* renderer, const VerdictComparison& c) {
                                                std::tuple{colours::kBothWrong, "both wrong ", c.both_wrong},
                                                std::tuple{colours::kBothRight, "both right ", c.both_right}})
         entries.push_back({unit_colour(colour), std::string(name).append(pixels_and_share(pixels, c.receiver_pixels))});
+    const error_colours::Colour& unjudged = error_colours::kNotJudged;
+    entries.push_back({glm::dvec3(unjudged[0], unjudged[1], unjudged[2]) / 255.0, "not judged (receives no shadow)"});
     add_legend(renderer, entries);
 }
 
