@@ -162,7 +162,9 @@ Json run_compare(const CompareOptions& o) {
     write_png(
         render_view(in_a, view_or_throw("difference"), difference, context.reference.width, context.reference.height),
         (dir / "difference.png").string());
-    std::string lesson = "<h1>" + a.method->name + " (A) against " + b.method->name + " (B)</h1>\n";
+    std::string lesson = "<h1>" + a.method->name + " (A) against " + b.method->name +
+                         " (B)</h1>\n<figure><img src=\"difference.png\" alt=\"Difference\"><figcaption>Where the "
+                         "verdicts differ, who is right: orange A, blue B</figcaption></figure>\n";
     for (const auto& [c, in] : {std::pair{&a, &in_a}, std::pair{&b, &in_b}})
         lesson += what_goes_wrong_section(
             *in, context, c->run, c->diagnosis,

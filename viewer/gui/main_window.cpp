@@ -702,8 +702,10 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue("windowState", saveState());
     for (size_t i = 0; i < splitters_.size(); ++i)
         settings.setValue(QString("splitter%1").arg(i), splitters_[i]->saveState());
-    for (size_t i = 0; i < panels_.size(); ++i)
-        settings.setValue(QString("panel%1").arg(i), QString::fromStdString(panels_[i]->view().name));
+    for (size_t i = 0; i < panels_.size(); ++i) {  // in compare mode, the views it will give back
+        const View& shown = comparing() ? *views_before_compare_[i] : panels_[i]->view();
+        settings.setValue(QString("panel%1").arg(i), QString::fromStdString(shown.name));
+    }
     const InspectionRequest request = controls_->request();
     settings.setValue("method", QString::fromStdString(request.method));
     settings.setValue("resolution", request.resolution);
