@@ -21,6 +21,10 @@ using shadowlab::testing::source_path;
 namespace {
 
 constexpr int kPixels = 128;          // the test views' image side
+// The grid draws each pixel's footprint at the level of its own size (metrics/max_density_grid.hpp):
+// where neighbouring footprints fall to different levels it misses up to half a coarse cell of the
+// coarser one, so a bound whose density varies across the image comes out up to about 2 % low.
+constexpr double kGridShare = 0.03;
 constexpr double kViewHalfSide = 10;  // the orthographic view's half side: 20 x 20 units of ground
 
 // A 40 x 40 ground, seen straight down by an orthographic camera over its middle 20 x 20, lit by a
@@ -51,7 +55,7 @@ Measurement measured(const MeasureContext& context, const std::string& name, int
 void tile(MaxDensityGrid& grid, double x0, double y0, int columns, int rows, double step, double density) {
     for (int j = 0; j < rows; ++j)
         for (int i = 0; i < columns; ++i)
-            grid.add(0, {x0 + (i + 0.5) * step, y0 + (j + 0.5) * step}, {step, 0.0}, {0.0, step}, density);
+            grid.add(0, {x0 + (i + 0.5) * step, y0 + (j + 0.5) * step}, {step, 0.0}, {0.0, step}, {density, density});
 }
 
 }  // namespace
@@ -66,21 +70,23 @@ TEST(Storage, GridIntegratesTheLargestDensityWhereSurfacesOverlap) {
     tile(sparse, 0.5, 0.0, 5, 5, 0.2, 1.0);
     tile(both, 0.0, 0.0, 10, 10, 0.1, 4.0);
     tile(both, 0.5, 0.0, 5, 5, 0.2, 1.0);
-    EXPECT_NEAR(dense.integral(), 4.0, 1e-9);
-    EXPECT_NEAR(sparse.integral(), 1.0, 1e-9);
-    EXPECT_NEAR(both.integral(), 4.5, 1e-9);
+    EXPECT_NEAR(dense.integral().x, 4.0, 1e-9);
+    EXPECT_NEAR(sparse.integral().x, 1.0, 1e-9);
+    EXPECT_NEAR(both.integral().x, 4.5, 1e-9);
     EXPECT_GT(both.cells(), dense.cells());
 }
 
 // Sheared, turned parallelograms tiling a region mark its area to within their outline's half
-// cells: 400 footprints of a lattice with edges (0.3, 0.1) and (-0.05, 0.2), density 2.
+// cells: 400 footprints of a lattice with edges (0.3, 0.1) and (-0.05, 0.2), density 2; the
+// second density only over the first ten columns.
 TEST(Storage, GridDrawsATilingOfShearedFootprintsToItsArea) {
     MaxDensityGrid grid;
     const glm::dvec2 a(0.3, 0.1), b(-0.05, 0.2);
     for (int j = 0; j < 20; ++j)
-        for (int i = 0; i < 20; ++i) grid.add(0, (i + 0.5) * a + (j + 0.5) * b, a, b, 2.0);
+        for (int i = 0; i < 20; ++i) grid.add(0, (i + 0.5) * a + (j + 0.5) * b, a, b, {2.0, i < 10 ? 2.0 : 0.0});
     const double area = 400.0 * std::abs(glm::determinant(glm::dmat2(a, b)));
-    EXPECT_NEAR(grid.integral(), 2.0 * area, 0.02 * 2.0 * area);
+    EXPECT_NEAR(grid.integral().x, 2.0 * area, 0.02 * 2.0 * area);
+    EXPECT_NEAR(grid.integral().y, area, 0.02 * area) << "the second density: half of the footprints";
 }
 
 // Under a sun tilted θ off the vertical, seen straight down by an orthographic camera: every
@@ -99,7 +105,7 @@ TEST(Storage, BoundOfAnOrthographicViewOfAPlaneIsCosThetaTexelsAPixel) {
         ASSERT_EQ(context.reference.width, kPixels);
         const double cos_theta = std::cos(glm::radians(tilt_deg));
         const double closed_form = kPixels * kPixels * cos_theta;
-        EXPECT_NEAR(context.storage_bounds.every_receiver, closed_form, 0.02 * closed_form);
+        EXPECT_NEAR(context.storage_bounds.every_receiver, closed_form, kGridShare * closed_form);
         const Measurement focused = measured(context, "focused", 512);
         ASSERT_TRUE(focused.storage);
         EXPECT_NEAR(focused.storage->needed, kPixels * kPixels, 0.03 * kPixels * kPixels);
@@ -130,7 +136,7 @@ TEST(Storage, BoundOfAPerspectiveViewOfAPlaneIsTheSumOfCosThetaOverCosAlpha) {
             const double x = ((i + 0.5) / kPixels * 2 - 1) * half, y = ((j + 0.5) / kPixels * 2 - 1) * half;
             sum += std::cos(tilt) * std::sqrt(1 + x * x + y * y);
         }
-    EXPECT_NEAR(context.storage_bounds.every_receiver, sum, 0.02 * sum);
+    EXPECT_NEAR(context.storage_bounds.every_receiver, sum, kGridShare * sum);
     EXPECT_GT(sum, 1.1 * kPixels * kPixels * std::cos(tilt)) << "the corners count more than the centre";
     const Measurement focused = measured(context, "focused", 512);
     EXPECT_LE(focused.storage->efficiency, 1.0);
@@ -154,7 +160,7 @@ TEST(Storage, BoundUnderASpotLightCountsItsDirectionsOnEveryCubeFace) {
             const glm::dvec3 p(-kViewHalfSide + (i + 0.5) * pixel, 0.0, -kViewHalfSide + (j + 0.5) * pixel);
             sum += 6.0 / glm::length(p - scene.light.position);
         }
-    EXPECT_NEAR(context.storage_bounds.every_receiver, sum, 0.02 * sum);
+    EXPECT_NEAR(context.storage_bounds.every_receiver, sum, kGridShare * sum);
     EXPECT_LT(sum, 0.7 * kPixels * kPixels) << "the far pixels are seen obliquely by the light";
 }
 

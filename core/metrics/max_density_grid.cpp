@@ -44,17 +44,19 @@ size_t MaxDensityGrid::CellHash::operator()(const Cell& c) const {
     return size_t(mixed(mixed(mixed(level_chart) ^ std::uint64_t(c.x)) ^ std::uint64_t(c.y)));
 }
 
-void MaxDensityGrid::mark(const Cell& cell, double density) {
-    float& value = marked_[cell];
-    value = std::max(value, float(density));
+void MaxDensityGrid::mark(const Cell& cell, const glm::vec2& densities) {
+    glm::vec2& value = marked_[cell];
+    value = glm::max(value, densities);
 }
 
 void MaxDensityGrid::add(int chart, const glm::dvec2& centre, const glm::dvec2& edge_a, const glm::dvec2& edge_b,
-                         double density) {
+                         const glm::dvec2& densities) {
     const glm::dmat2 edges(edge_a, edge_b);
     const double area = std::abs(glm::determinant(edges));
-    if (!(area > 0.0) || !std::isfinite(area) || !(density > 0.0) || !std::isfinite(density)) return;
-    const int level = int(std::ceil(std::log2(2.0 / std::sqrt(area))));  // cells at most half the footprint wide
+    if (!(area > 0.0) || !std::isfinite(area) || !glm::all(glm::greaterThanEqual(densities, glm::dvec2(0.0))) ||
+        !std::isfinite(densities.x + densities.y))
+        return;
+    const int level = int(std::ceil(std::log2(1.0 / std::sqrt(area))));  // cells at most the footprint's square root
     const double side = std::ldexp(1.0, -level);
     const glm::dmat2 to_ab = glm::inverse(edges);  // (a, b) of a point relative to the centre
     const glm::dvec2 reach = 0.5 * (glm::abs(edge_a) + glm::abs(edge_b));
@@ -65,29 +67,32 @@ void MaxDensityGrid::add(int chart, const glm::dvec2& centre, const glm::dvec2& 
         if (!clip_to_parallelogram(to_ab[1] * (y - centre.y), to_ab[0], lo, hi)) continue;
         const CellRange columns = centres_within(centre.x + lo, centre.x + hi, side);
         for (std::int64_t column = columns.first; column <= columns.last; ++column)
-            mark({.chart = chart, .level = level, .x = column, .y = row}, density);
+            mark({.chart = chart, .level = level, .x = column, .y = row}, glm::vec2(densities));
     }
 }
 
-double MaxDensityGrid::integral_under(const Cell& cell, double inherited,
-                                      const std::unordered_set<Cell, CellHash>& inner) const {
+glm::dvec2 MaxDensityGrid::integral_under(const Cell& cell, const glm::dvec2& inherited,
+                                          const std::unordered_set<Cell, CellHash>& inner) const {
     const auto found = marked_.find(cell);
-    const double value = std::max(inherited, found == marked_.end() ? 0.0 : double(found->second));
+    const glm::dvec2 value = found == marked_.end() ? inherited : glm::max(inherited, glm::dvec2(found->second));
     if (!inner.contains(cell)) return value * std::ldexp(1.0, -2 * cell.level);
-    double sum = 0.0;
+    glm::dvec2 sum(0.0);
     for (std::int64_t dy : {0, 1})
         for (std::int64_t dx : {0, 1})
-            sum += integral_under({cell.chart, cell.level + 1, 2 * cell.x + dx, 2 * cell.y + dy}, value, inner);
+            sum += integral_under(
+                {.chart = cell.chart, .level = cell.level + 1, .x = 2 * cell.x + dx, .y = 2 * cell.y + dy}, value,
+                inner);
     return sum;
 }
 
-double MaxDensityGrid::integral() const {
+glm::dvec2 MaxDensityGrid::integral() const {
     std::map<int, int> coarsest;  // per chart, its coarsest marked level: the quadtree's roots
     for (const auto& [cell, value] : marked_) {
         const auto [at, inserted] = coarsest.try_emplace(cell.chart, cell.level);
         at->second = std::min(at->second, cell.level);
     }
     std::unordered_set<Cell, CellHash> inner;  // cells with a marked cell below them
+    inner.reserve(marked_.size());
     for (const auto& [cell, value] : marked_)
         for (Cell up = cell; up.level > coarsest.at(cell.chart);) {
             up = up.parent();
@@ -98,8 +103,8 @@ double MaxDensityGrid::integral() const {
         if (cell.level == coarsest.at(cell.chart)) roots.insert(cell);
     for (const Cell& cell : inner)
         if (cell.level == coarsest.at(cell.chart)) roots.insert(cell);
-    double sum = 0.0;
-    for (const Cell& root : roots) sum += integral_under(root, 0.0, inner);
+    glm::dvec2 sum(0.0);
+    for (const Cell& root : roots) sum += integral_under(root, glm::dvec2(0.0), inner);
     return sum;
 }
 

@@ -4,12 +4,13 @@
 // tile the plane and those of surfaces one behind the other overlap: ∫ max_i ρ_i 1[q ∈ P_i] dq.
 //
 // A multi-level grid (a sparse quadtree of square cells, level l of side 2^-l, on each chart of the
-// plane): each parallelogram is drawn into the level whose cells are the largest at most half as
-// wide as the square of its area (so a footprint covers about four to sixteen cells and the level
-// resolves it), marking every cell whose centre it holds with its density, the largest kept per
-// cell. Parallelograms that tile the plane at one level mark each centre once, so their union is
-// drawn to within half a cell along its outline. The integral then takes, at every point, the
-// largest value of the cells holding it at any level: a coarse cell's value reaches into its finer
+// plane): each parallelogram is drawn into the level whose cells are the largest no wider than the
+// square root of its area (so a footprint covers one to four cells and the level resolves it),
+// marking every cell whose centre it holds with its density, the largest kept per cell. Densities
+// come in pairs integrated at once, each on its own (a bound over all the footprints and over a
+// subset of them: 0 where a footprint is not in the subset). Parallelograms that tile the plane at one level mark each
+// centre once, so their union is drawn to within half a cell along its outline. The integral then takes, at every
+// point, the largest value of the cells holding it at any level: a coarse cell's value reaches into its finer
 // descendants, so where a sparse surface lies behind a dense one (or beside it) the dense one
 // counts wherever both are. Exact for the cells as marked; the marking's error is half a cell
 // along the outlines and along the lines where the level changes.
@@ -24,10 +25,11 @@ class MaxDensityGrid {
 public:
     // The parallelogram centre + a·edge_a + b·edge_b, |a|, |b| <= 1/2, on `chart`, asking `density`
     // (per unit area) there. A degenerate one (no area) marks nothing.
-    void add(int chart, const glm::dvec2& centre, const glm::dvec2& edge_a, const glm::dvec2& edge_b, double density);
+    void add(int chart, const glm::dvec2& centre, const glm::dvec2& edge_a, const glm::dvec2& edge_b,
+             const glm::dvec2& densities);
 
-    // ∫ max density over every chart.
-    double integral() const;
+    // ∫ max density over every chart, each of the pair.
+    glm::dvec2 integral() const;
 
     size_t cells() const { return marked_.size(); }
 
@@ -36,16 +38,19 @@ private:
         int chart = 0, level = 0;
         std::int64_t x = 0, y = 0;  // the cell [x, x + 1) × [y, y + 1) in units of 2^-level
         bool operator==(const Cell&) const = default;
-        Cell parent() const { return {chart, level - 1, x >> 1, y >> 1}; }  // >> floors negatives (C++20)
+        Cell parent() const {  // >> floors negatives (C++20)
+            return {.chart = chart, .level = level - 1, .x = x >> 1, .y = y >> 1};
+        }
     };
     struct CellHash {
         size_t operator()(const Cell& c) const;
     };
 
-    void mark(const Cell& cell, double density);
-    double integral_under(const Cell& cell, double inherited, const std::unordered_set<Cell, CellHash>& inner) const;
+    void mark(const Cell& cell, const glm::vec2& densities);
+    glm::dvec2 integral_under(const Cell& cell, const glm::dvec2& inherited,
+                              const std::unordered_set<Cell, CellHash>& inner) const;
 
-    std::unordered_map<Cell, float, CellHash> marked_;  // the largest density drawn into each cell
+    std::unordered_map<Cell, glm::vec2, CellHash> marked_;  // the largest densities drawn into each cell
 };
 
 }  // namespace shadowlab

@@ -42,17 +42,18 @@ bool in_reach(const Light& light, const glm::dvec3& p) {
 
 StorageBounds storage_lower_bounds(const Scene& scene, const ReferenceImage& reference) {
     const LightImage image(scene.light);
-    MaxDensityGrid every_receiver, shadowed_receivers;
+    MaxDensityGrid grid;  // densities: every receiver's, the shadowed receivers' (0 for a lit one)
     for (int y = 0; y < reference.height; ++y)
         for (int x = 0; x < reference.width; ++x)
             if (const std::optional<PixelSteps> steps = pixel_steps(scene, reference, x, y);
                 steps && in_reach(scene.light, steps->point))
                 if (const std::optional<LightFootprint> f = light_footprint(image, *steps)) {
-                    every_receiver.add(f->centre.chart, f->centre.at, f->right, f->down, f->density);
-                    if (!reference.lit[size_t(y) * reference.width + x])
-                        shadowed_receivers.add(f->centre.chart, f->centre.at, f->right, f->down, f->density);
+                    const bool shadowed = !reference.lit[size_t(y) * reference.width + x];
+                    grid.add(f->centre.chart, f->centre.at, f->right, f->down,
+                             {f->density, shadowed ? f->density : 0.0});
                 }
-    return {.every_receiver = every_receiver.integral(), .shadowed_receivers = shadowed_receivers.integral()};
+    const glm::dvec2 bounds = grid.integral();
+    return {.every_receiver = bounds.x, .shadowed_receivers = bounds.y};
 }
 
 StorageFactor storage_factor(double texels, const AliasingStats& m_perspective, double lower_bound) {
