@@ -20,7 +20,7 @@ using shadowlab::testing::source_path;
 
 namespace {
 
-constexpr int kPixels = 128;          // the test views' image side
+constexpr int kPixels = 128;  // the test views' image side
 // The grid draws each pixel's footprint at the level of its own size (metrics/max_density_grid.hpp):
 // where neighbouring footprints fall to different levels it misses up to half a coarse cell of the
 // coarser one, so a bound whose density varies across the image comes out up to about 2 % low.
