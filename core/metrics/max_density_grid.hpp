@@ -6,14 +6,17 @@
 // A multi-level grid (a sparse quadtree of square cells, level l of side 2^-l, on each chart of the
 // plane): each parallelogram is drawn into the level whose cells are the largest no wider than the
 // square root of its area (so a footprint covers one to four cells and the level resolves it),
-// marking every cell whose centre it holds with its density, the largest kept per cell. Densities
-// come in pairs integrated at once, each on its own (a bound over all the footprints and over a
-// subset of them: 0 where a footprint is not in the subset). Parallelograms that tile the plane at one level mark each
-// centre once, so their union is drawn to within half a cell along its outline. The integral then takes, at every
-// point, the largest value of the cells holding it at any level: a coarse cell's value reaches into its finer
+// marking every cell whose centre it holds with its density, the largest kept per cell.
+// Parallelograms that tile the plane at one level mark each centre once, so their union is drawn
+// to within half a cell along its outline. The integral then takes, at every point, the largest
+// value of the cells holding it at any level: a coarse cell's value reaches into its finer
 // descendants, so where a sparse surface lies behind a dense one (or beside it) the dense one
-// counts wherever both are. Exact for the cells as marked; the marking's error is half a cell
-// along the outlines and along the lines where the level changes.
+// counts wherever both are. Exact for the cells as marked; the marking misses up to half a coarse
+// cell of the coarser footprints along the lines where the level changes (a density that varies
+// across the plane comes out a few per cent low: a lower bound stays one).
+//
+// Densities come in pairs integrated at once, each on its own (a bound over all the footprints and
+// over a subset of them: 0 where a footprint is not in the subset).
 #include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
