@@ -22,8 +22,13 @@ void write_csv_row(std::ofstream& csv, const std::string& scene, const Measureme
     const ShadowError& e = m.error;
     csv << csv_field(scene) << ',' << m.method << ',' << m.resolution << ',' << e.misclassified << ',' << e.false_shadow
         << ',' << e.false_light << ',' << e.m.max << ',' << e.m.mean << ',' << e.m.p95 << ',' << e.m_perspective.max
-        << ',' << e.m_perspective.mean << ',' << e.m_perspective.p95 << ',' << m.setup_ms << ',' << m.raster_ms << ','
-        << m.setup_ms + m.raster_ms << ',' << csv_field(describe(m.notes())) << ',';
+        << ',' << e.m_perspective.mean << ',' << e.m_perspective.p95 << ',';
+    if (m.storage)
+        csv << m.storage->needed << ',' << m.storage->lower_bound << ',' << m.storage->efficiency;
+    else
+        csv << ",,";
+    csv << ',' << m.setup_ms << ',' << m.raster_ms << ',' << m.setup_ms + m.raster_ms << ','
+        << csv_field(describe(m.notes())) << ',';
     if (m.geometry)
         csv << m.geometry->polygons << ',' << m.geometry->fill_mean << ',' << m.geometry->fill_max;
     else
@@ -33,16 +38,21 @@ void write_csv_row(std::ofstream& csv, const std::string& scene, const Measureme
 
 using Runs = std::vector<std::pair<std::string, std::vector<Measurement>>>;
 
-// One line per method (and scene), one point per resolution: `value` of each measurement against its
-// total cost (setup + rasterization); a measurement without a value (nullopt) is left out, and so
-// is a line left with no point. A cross marks a fallback or a named limit.
+// Which of a method's measurements a chart shows: one per resolution, or its largest resolution's.
+enum class Resolutions { every, largest };
+
+// One line per method (and scene), one point per resolution (or the largest's alone): `value` of each
+// measurement against its total cost (setup + rasterization); a measurement without a value
+// (nullopt) is left out, and so is a line left with no point. A cross marks a fallback or a named
+// limit.
 template <class Value>
-ChartSpec against_cost(ChartSpec chart, const Runs& runs, Value&& value) {
+ChartSpec against_cost(ChartSpec chart, const Runs& runs, Value&& value, Resolutions shown = Resolutions::every) {
     for (const auto& [name, measurements] : runs) {
         ChartSeries series;
         series.name = name;
         for (const Measurement& m : measurements)
-            if (const std::optional<double> y = value(m)) {
+            if (const std::optional<double> y = value(m);
+                y && (shown == Resolutions::every || &m == &measurements.back())) {
                 series.x.push_back(m.setup_ms + m.raster_ms);
                 series.y.push_back(*y);
                 series.marked.push_back(!m.notes().empty());
@@ -82,6 +92,28 @@ ChartSpec aliasing_against_cost(const Runs& runs) {
                         });
 }
 
+// The storage efficiency of the map methods (metrics/storage_bound.hpp: the view's lower bound on
+// the texels for a max perspective m of 1 over the texels the method needs for it), one point per
+// method at the largest resolution: the efficiency does not follow the resolution (both counts are
+// the texels at which m reaches 1), its cost does.
+ChartSpec efficiency_against_cost(const Runs& runs) {
+    return against_cost(
+        {"Storage efficiency against cost (largest resolution)",
+         "cost per frame: setup + rasterization (ms)",
+         "storage efficiency (lower bound / texels needed)",
+         true,
+         true,
+         900,
+         600,
+         {},
+         ChartSpec::LegendCorner::bottom_right},
+        runs,
+        [](const Measurement& m) {
+            return m.storage && m.storage->efficiency > 0.0 ? std::optional(m.storage->efficiency) : std::nullopt;
+        },
+        Resolutions::largest);
+}
+
 }  // namespace
 
 void run_bench(const BenchOptions& o) {
@@ -93,7 +125,8 @@ void run_bench(const BenchOptions& o) {
     std::ofstream csv(csv_path);
     if (!csv) throw std::runtime_error(csv_path + ": cannot write");
     csv << "scene,method,resolution,misclassified,false_shadow,false_light,m_max,m_mean,m_p95,m_perspective_max,"
-           "m_perspective_mean,m_perspective_p95,setup_ms,raster_ms,total_ms,fallback,polygons,fill_mean,fill_max\n";
+           "m_perspective_mean,m_perspective_p95,storage_needed,storage_lower_bound,storage_efficiency,setup_ms,raster_"
+           "ms,total_ms,fallback,polygons,fill_mean,fill_max\n";
 
     Runs runs;
     // A technique has no map: it is measured once per scene, whatever the resolutions.
@@ -125,6 +158,9 @@ void run_bench(const BenchOptions& o) {
     const std::string aliasing_path = (std::filesystem::path(o.out_dir) / "bench_aliasing.png").string();
     write_chart_png(aliasing_against_cost(runs), aliasing_path);
     std::cout << "wrote " << aliasing_path << "\n";
+    const std::string storage_path = (std::filesystem::path(o.out_dir) / "bench_storage.png").string();
+    write_chart_png(efficiency_against_cost(runs), storage_path);
+    std::cout << "wrote " << storage_path << "\n";
 }
 
 }  // namespace shadowlab

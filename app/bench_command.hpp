@@ -1,7 +1,8 @@
 #pragma once
 // `shadowlab bench SCENE... [--methods a,b] [--resolutions 256,512,...] [--size WxH] --out DIR`:
 // every method at every resolution on every scene; DIR/bench.csv, DIR/bench.png (error against
-// cost, one line per method) and DIR/bench_aliasing.png (max perspective m against cost). With
+// cost, one line per method), DIR/bench_aliasing.png (max perspective m against cost) and
+// DIR/bench_storage.png (storage efficiency against cost, a point per map method). With
 // --filters: the filters' error against their cost instead (filter_bench.hpp).
 #include <string>
 #include <vector>

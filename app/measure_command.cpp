@@ -59,6 +59,11 @@ Json to_json(const ShadowLookup& l) {
                  : Json(nullptr)}};
 }
 
+// The texels its max perspective m asks, the view's lower bound, their ratio (metrics/storage_bound.hpp).
+Json to_json(const StorageFactor& s) {
+    return {{"needed", s.needed}, {"lower_bound", s.lower_bound}, {"efficiency", s.efficiency}};
+}
+
 }  // namespace
 
 Json to_json(const Diagnosis& d) {
@@ -97,7 +102,8 @@ Json to_json(const Measurement& m) {
                          : m.bias >= 0.0 ? Json(m.bias)
                                          : Json(describe(m.lookup.bias))},
                 {"receiver_pixels", e.receiver_pixels},
-                {"visibility", to_json(e.visibility)}};
+                {"visibility", to_json(e.visibility)},
+                {"storage", m.storage ? to_json(*m.storage) : Json(nullptr)}};
     if (!m.geometry) {
         out["lookup"] = to_json(m.lookup);
         out["prefilter_ms"] = m.prefilter_ms;
@@ -174,6 +180,9 @@ void print_text(const Measurement& m, const glm::ivec2& image) {
     if (m.texels_used > 0.0)
         std::cout << "  texels: " << m.texels_used << " in the maps' tiles, of " << double(m.resolution) * m.resolution
                   << " in the texture\n";
+    if (m.storage)
+        std::cout << "  storage: " << m.storage->needed << " texels for max perspective m 1, the view's lower bound "
+                  << m.storage->lower_bound << ": efficiency " << m.storage->efficiency << "\n";
     std::cout << "  cost: setup " << m.setup_ms << " ms, raster " << m.raster_ms << " ms, total "
               << m.setup_ms + m.raster_ms << " ms\n";
     if (m.geometry)

@@ -96,7 +96,7 @@ soft --set filter=vsm --set kernel_size=5 --view shadowmap --texture deviation -
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 x $shadowlab bench data/scenes/default.json --out "$work/bench"
-cp "$work/bench/bench.png" "$work/bench/bench_aliasing.png" $images/
+cp "$work/bench/bench.png" "$work/bench/bench_aliasing.png" "$work/bench/bench_storage.png" $images/
 x $shadowlab sweep data/scenes/default.json --out "$work/sweep"
 cp "$work/sweep/sweep_angle.png" $images/
 x $shadowlab bench data/scenes/sun_disc.json --filters --resolutions 2048 --size 640x360 --out "$work/filters"

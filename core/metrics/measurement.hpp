@@ -7,6 +7,7 @@
 
 #include "metrics/map_breakdown.hpp"
 #include "metrics/shadow_error.hpp"
+#include "metrics/storage_bound.hpp"
 #include "reference/exact_shadows.hpp"
 #include "registry/method.hpp"
 #include "scene/tessellation.hpp"
@@ -19,6 +20,7 @@ struct MeasureContext {
     WorldTriangles triangles;
     std::vector<bool> casters;
     ReferenceImage reference;
+    StorageBounds storage_bounds;  // the view's (metrics/storage_bound.hpp), from the reference
 };
 
 // The reference of the largest image of the camera's aspect within width x height (image_size_within):
@@ -44,6 +46,7 @@ struct Measurement {
     std::optional<GeometryCost> geometry;  // geometric techniques only: polygons drawn, fragments per pixel
     std::optional<MapBreakdown> by_map;    // setups of several maps only: per map, and the seams
     std::optional<PageTable> pages;        // a virtual map's page table (MapSelection::Rule::pages)
+    std::optional<StorageFactor> storage;  // maps only: the texels its max perspective m asks, against the view's bound
 
     // What the method told the user: a map's fallbacks, a technique's limits.
     const std::vector<Note>& notes() const { return geometry ? limits : fallbacks; }

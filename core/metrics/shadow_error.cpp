@@ -8,6 +8,7 @@
 #include "math/parallel_rows.hpp"
 #include "math/singular_values.hpp"
 #include "metrics/pixel_evidence.hpp"
+#include "metrics/pixel_steps.hpp"
 #include "reference/camera_depth_image.hpp"
 
 namespace shadowlab {
@@ -19,46 +20,6 @@ double texel_extent_in_pixels(const glm::dvec2& uv, const glm::dvec2& uv_right, 
 }
 
 namespace {
-
-glm::dvec3 along_light(const Light& light, const glm::dvec3& p) {
-    return light.is_directional() ? light.direction : glm::normalize(p - light.position);
-}
-
-}  // namespace
-
-namespace {
-
-// Faces turned from the light (or edge-on to it) are dark by shading whatever a map says: only
-// pixels of receivers that face the light are judged.
-constexpr float kMinFacing = 1e-3f;
-
-bool receives(const Scene& scene, const ReferenceImage& ref, size_t i) {
-    return ref.visible[i] && scene.objects[ref.object[i]].receives && ref.facing[i] > kMinFacing;
-}
-
-// The neighbour one pixel along (dx, dy), or the one on the other side when that is off the
-// object; its offset sign tells which was used. -1 when neither lies on the same object.
-long neighbour(const ReferenceImage& ref, int x, int y, int dx, int dy, double& sign) {
-    const size_t i = size_t(y) * ref.width + x;
-    for (int s : {1, -1}) {
-        const int nx = x + s * dx, ny = y + s * dy;
-        if (nx < 0 || ny < 0 || nx >= ref.width || ny >= ref.height) continue;
-        const size_t n = size_t(ny) * ref.width + nx;
-        if (ref.visible[n] && ref.object[n] == ref.object[i]) {
-            sign = s;
-            return long(n);
-        }
-    }
-    return -1;
-}
-
-// Where the camera's ray through `seen` (from the eye, or parallel to the view for an orthographic
-// camera) meets the plane through p with normal n.
-glm::dvec3 along_ray_onto_plane(const Camera& camera, const glm::dvec3& seen, const glm::dvec3& p,
-                                const glm::dvec3& n) {
-    const glm::dvec3 eye = camera.eye_of(seen), ray = seen - eye;
-    return eye + ray * (glm::dot(n, p - eye) / glm::dot(n, ray));
-}
 
 // Lloyd's m at one pixel and its two factors (0 where not measured).
 struct PixelAliasing {
@@ -75,27 +36,19 @@ struct PixelAliasing {
 // the texel (A_l) against the pixel (A_e) alone: the perspective factor; the measure on T over it
 // is the projection factor. Both use the same one-pixel steps: H's are the neighbours' view rays
 // met with H, so that a surface which is H has a projection factor of exactly 1.
-PixelAliasing pixel_aliasing(const Scene& scene, const ReferenceImage& ref, const ShadowMap& map, double texels, int x,
-                             int y) {
-    double sx = 1, sy = 1;
-    const long right = neighbour(ref, x, y, 1, 0, sx), down = neighbour(ref, x, y, 0, 1, sy);
-    if (right < 0 || down < 0) return {};
-    const glm::dvec3& p = ref.position[size_t(y) * ref.width + x];
-    const glm::dvec2 uv(world_to_uvz(map, p));
+PixelAliasing pixel_aliasing(const ShadowMap& map, double texels, const PixelSteps& steps) {
+    const glm::dvec2 uv(world_to_uvz(map, steps.point));
     if (!(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1)) return {};  // off the map: lit, no texels
     // The measure with the neighbours' points moved to `right_at` and `down_at`.
     auto texel_extent = [&](const glm::dvec3& right_at, const glm::dvec3& down_at) {
-        const glm::dvec2 du = sx * (glm::dvec2(world_to_uvz(map, right_at)) - uv);
-        const glm::dvec2 dv = sy * (glm::dvec2(world_to_uvz(map, down_at)) - uv);
+        const glm::dvec2 du = steps.right_sign * (glm::dvec2(world_to_uvz(map, right_at)) - uv);
+        const glm::dvec2 dv = steps.down_sign * (glm::dvec2(world_to_uvz(map, down_at)) - uv);
         const double extent = texel_extent_in_pixels(uv, uv + du, uv + dv, texels);
         return std::isfinite(extent) ? extent : 0.0;
     };
-    const double m = texel_extent(ref.position[right], ref.position[down]);
+    const double m = texel_extent(steps.right, steps.down);
     if (m <= 0.0) return {};
-    const Camera& camera = scene.camera;
-    const glm::dvec3 halfway = glm::normalize(glm::normalize(camera.eye_of(p) - p) - along_light(scene.light, p));
-    const double perspective = texel_extent(along_ray_onto_plane(camera, ref.position[right], p, halfway),
-                                            along_ray_onto_plane(camera, ref.position[down], p, halfway));
+    const double perspective = texel_extent(steps.right_on_halfway, steps.down_on_halfway);
     if (perspective <= 0.0) return {m, 0.0, 0.0};
     return {m, perspective, m / perspective};
 }
@@ -194,8 +147,9 @@ ShadowError measure_shadow_error(const Scene& scene, const ReferenceImage& ref, 
             if (const double step = world_depth_step(map, reader.depth().format, along_light(scene.light, p), p);
                 std::isfinite(step))
                 depth_steps.push_back(step);
-            const PixelAliasing a =
-                pixel_aliasing(scene, ref, map, tile_resolution(map, reader.depth().resolution), x, y);
+            const std::optional<PixelSteps> steps = pixel_steps(scene, ref, x, y);
+            if (!steps) continue;
+            const PixelAliasing a = pixel_aliasing(map, tile_resolution(map, reader.depth().resolution), *steps);
             if (a.m > 0.0) {
                 e.m_image[i] = float(a.m);
                 ms.push_back(a.m);
