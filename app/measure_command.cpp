@@ -233,6 +233,12 @@ MeasureContext prepare_with_progress(const std::string& scene_file, const SceneS
     MeasureContext context = prepare_measurement(scene, width, height);
     std::cerr << " " << std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()
               << " ms\n";
+    std::cerr << "measure: the view's storage bound..." << std::flush;
+    const auto bound_start = std::chrono::steady_clock::now();
+    add_storage_bounds(context);
+    std::cerr << " "
+              << std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - bound_start).count()
+              << " ms\n";
     return context;
 }
 

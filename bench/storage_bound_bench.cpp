@@ -1,4 +1,4 @@
-// What the storage lower bound (metrics/storage_bound.hpp) adds to `prepare_measurement`: the
+// What the storage lower bound (metrics/storage_bound.hpp) adds to a measure context (`add_storage_bounds`): the
 // bound over the default scene's reference at 640x360 and 1280x720, beside the exact reference it
 // is computed from (the Embree rays `prepare_measurement` traces first).
 #include <benchmark/benchmark.h>

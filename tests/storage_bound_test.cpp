@@ -20,6 +20,13 @@ using shadowlab::testing::source_path;
 
 namespace {
 
+// A measure context whose measures report their storage, as `measure`, `bench` and `compare` make it.
+MeasureContext context_with_bounds(const Scene& scene, int width, int height) {
+    MeasureContext context = prepare_measurement(scene, width, height);
+    add_storage_bounds(context);
+    return context;
+}
+
 constexpr int kPixels = 128;  // the test views' image side
 // The grid draws each pixel's footprint at the level of its own size (metrics/max_density_grid.hpp):
 // where neighbouring footprints fall to different levels it misses up to half a coarse cell of the
@@ -101,11 +108,11 @@ TEST(Storage, GridDrawsATilingOfShearedFootprintsToItsArea) {
 TEST(Storage, BoundOfAnOrthographicViewOfAPlaneIsCosThetaTexelsAPixel) {
     for (const double tilt_deg : {0.0, 30.0, 60.0}) {
         SCOPED_TRACE(tilt_deg);
-        const MeasureContext context = prepare_measurement(ground_seen_from_above(tilt_deg), kPixels, kPixels);
+        const MeasureContext context = context_with_bounds(ground_seen_from_above(tilt_deg), kPixels, kPixels);
         ASSERT_EQ(context.reference.width, kPixels);
         const double cos_theta = std::cos(glm::radians(tilt_deg));
         const double closed_form = kPixels * kPixels * cos_theta;
-        EXPECT_NEAR(context.storage_bounds.every_receiver, closed_form, kGridShare * closed_form);
+        EXPECT_NEAR(context.storage_bounds->every_receiver, closed_form, kGridShare * closed_form);
         const Measurement focused = measured(context, "focused", 512);
         ASSERT_TRUE(focused.storage);
         EXPECT_NEAR(focused.storage->needed, kPixels * kPixels, 0.03 * kPixels * kPixels);
@@ -127,7 +134,7 @@ TEST(Storage, BoundOfAPerspectiveViewOfAPlaneIsTheSumOfCosThetaOverCosAlpha) {
     const double tilt = glm::radians(40.0);
     scene.light.direction = {0.0, -std::cos(tilt), std::sin(tilt)};
     scene.camera = camera_20_units_above_the_origin();
-    const MeasureContext context = prepare_measurement(scene, kPixels, kPixels);
+    const MeasureContext context = context_with_bounds(scene, kPixels, kPixels);
     ASSERT_EQ(context.reference.width, kPixels);
     const double half = std::tan(glm::radians(scene.camera.fov_y_deg / 2));
     double sum = 0.0;
@@ -136,7 +143,7 @@ TEST(Storage, BoundOfAPerspectiveViewOfAPlaneIsTheSumOfCosThetaOverCosAlpha) {
             const double x = ((i + 0.5) / kPixels * 2 - 1) * half, y = ((j + 0.5) / kPixels * 2 - 1) * half;
             sum += std::cos(tilt) * std::sqrt(1 + x * x + y * y);
         }
-    EXPECT_NEAR(context.storage_bounds.every_receiver, sum, kGridShare * sum);
+    EXPECT_NEAR(context.storage_bounds->every_receiver, sum, kGridShare * sum);
     EXPECT_GT(sum, 1.1 * kPixels * kPixels * std::cos(tilt)) << "the corners count more than the centre";
     const Measurement focused = measured(context, "focused", 512);
     EXPECT_LE(focused.storage->efficiency, 1.0);
@@ -151,7 +158,7 @@ TEST(Storage, BoundUnderASpotLightCountsItsDirectionsOnEveryCubeFace) {
     Scene scene = ground_seen_from_above(0.0);
     scene.light = {
         .type = LightType::spot, .direction = {0.0, -1.0, 0.0}, .position = {0.0, 6.0, 0.0}, .cone_deg = 150.0};
-    const MeasureContext context = prepare_measurement(scene, kPixels, kPixels);
+    const MeasureContext context = context_with_bounds(scene, kPixels, kPixels);
     ASSERT_EQ(context.reference.width, kPixels);
     double sum = 0.0;
     const double pixel = 2 * kViewHalfSide / kPixels;
@@ -160,7 +167,7 @@ TEST(Storage, BoundUnderASpotLightCountsItsDirectionsOnEveryCubeFace) {
             const glm::dvec3 p(-kViewHalfSide + (i + 0.5) * pixel, 0.0, -kViewHalfSide + (j + 0.5) * pixel);
             sum += 6.0 / glm::length(p - scene.light.position);
         }
-    EXPECT_NEAR(context.storage_bounds.every_receiver, sum, kGridShare * sum);
+    EXPECT_NEAR(context.storage_bounds->every_receiver, sum, kGridShare * sum);
     EXPECT_LT(sum, 0.7 * kPixels * kPixels) << "the far pixels are seen obliquely by the light";
 }
 
@@ -169,7 +176,7 @@ TEST(Storage, BoundUnderASpotLightCountsItsDirectionsOnEveryCubeFace) {
 // registered map method whose texels follow the texture's resolution (a method whose texel size is
 // a setting, Method::finer_texels, keeps its m as the texture grows).
 TEST(Storage, PerspectiveMHalvesAsTheResolutionDoubles) {
-    const MeasureContext context = prepare_measurement(load_scene(source_path("data/scenes/default.json")), 160, 90);
+    const MeasureContext context = context_with_bounds(load_scene(source_path("data/scenes/default.json")), 160, 90);
     int checked = 0;
     for (const Method& method : all_methods()) {
         if (!method.makes_maps() || method.finer_texels) continue;
@@ -192,8 +199,8 @@ TEST(Storage, EveryMethodsEfficiencyIsAtMostOne) {
     int checked = 0;
     for (const std::string scene : {"default", "spot", "point", "box_on_plane"}) {
         const MeasureContext context =
-            prepare_measurement(load_scene(source_path("data/scenes/" + scene + ".json")), 160, 90);
-        const StorageBounds& bounds = context.storage_bounds;
+            context_with_bounds(load_scene(source_path("data/scenes/" + scene + ".json")), 160, 90);
+        const StorageBounds& bounds = *context.storage_bounds;
         ASSERT_GT(bounds.shadowed_receivers, 0.0) << scene;
         ASSERT_LT(bounds.shadowed_receivers, bounds.every_receiver) << scene;
         for (const Method& method : all_methods()) {

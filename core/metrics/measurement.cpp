@@ -57,7 +57,8 @@ Measurement measure_maps(const MeasureContext& c, const Method& method, const Se
     const std::vector<float> visibility = receiver_visibility(c.scene, c.reference, reader, &count);
     m.lookup_ms = lookup_watch.ms();
     m.error = measure_shadow_error(c.scene, c.reference, reader, visibility);
-    m.storage = storage_factor(m.texels_used, m.error.m_perspective, c.storage_bounds.for_coverage(method.covers));
+    if (c.storage_bounds)
+        m.storage = storage_factor(m.texels_used, m.error.m_perspective, c.storage_bounds->for_coverage(method.covers));
     m.taps_per_pixel = m.error.receiver_pixels ? double(count.taps) / double(m.error.receiver_pixels) : 0.0;
     for (Note& note : reader.fallbacks(count)) m.fallbacks.push_back(std::move(note));
     if (setup.maps.size() > 1) m.by_map = break_down_by_map(c.reference, m.error, setup);
@@ -131,8 +132,11 @@ MeasureContext prepare_measurement(const Scene& scene, int width, int height, in
     MeasureContext c{scene, object_boxes(scene), tessellate(scene), caster_flags(scene), {}};
     const glm::ivec2 image = image_size_within(scene.camera, width, height);
     c.reference = light_reference(scene, c.triangles, image.x, image.y, light_samples);
-    c.storage_bounds = storage_lower_bounds(c.scene, c.reference);
     return c;
+}
+
+void add_storage_bounds(MeasureContext& context) {
+    context.storage_bounds = storage_lower_bounds(context.scene, context.reference);
 }
 
 Measurement measure(const MeasureContext& c, const Method& method, const Settings& settings, int resolution,

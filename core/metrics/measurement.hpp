@@ -20,13 +20,18 @@ struct MeasureContext {
     WorldTriangles triangles;
     std::vector<bool> casters;
     ReferenceImage reference;
-    StorageBounds storage_bounds;  // the view's (metrics/storage_bound.hpp), from the reference
+    // The view's storage bounds (metrics/storage_bound.hpp), from the reference: only where a measure
+    // reports storage (add_storage_bounds); they cost more than the reference itself.
+    std::optional<StorageBounds> storage_bounds;
 };
 
 // The reference of the largest image of the camera's aspect within width x height (image_size_within):
 // context.reference.width and .height say which. With an area light it is the soft reference from
 // `light_samples` rays per pixel (its lit verdicts still from the light's centre).
 MeasureContext prepare_measurement(const Scene& scene, int width, int height, int light_samples = kDefaultLightSamples);
+
+// The context's storage bounds, so that every measure on it reports its storage (Measurement::storage).
+void add_storage_bounds(MeasureContext& context);
 
 struct Measurement {
     std::string method;
@@ -46,7 +51,8 @@ struct Measurement {
     std::optional<GeometryCost> geometry;  // geometric techniques only: polygons drawn, fragments per pixel
     std::optional<MapBreakdown> by_map;    // setups of several maps only: per map, and the seams
     std::optional<PageTable> pages;        // a virtual map's page table (MapSelection::Rule::pages)
-    std::optional<StorageFactor> storage;  // maps only: the texels its max perspective m asks, against the view's bound
+    std::optional<StorageFactor> storage;  // maps on a context with storage bounds: the texels its max perspective m
+                                           // asks, against the view's bound
 
     // What the method told the user: a map's fallbacks, a technique's limits.
     const std::vector<Note>& notes() const { return geometry ? limits : fallbacks; }
