@@ -1,12 +1,14 @@
 #pragma once
-// `shadowlab lesson SCENE --method M [--set k=v]... [--resolution N] [--size WxH] [--row-vectors] --out DIR`
+// `shadowlab lesson SCENE --method M [--set k=v]... [--resolution N] [--size WxH] [--row-vectors] [--interactive]
+//  --out DIR`
 // A course page: DIR/index.html and its pictures. For each step of the method, its number and title,
 // the formula it applies, its values (matrices as 4 x 4 tables) and the views that show it, drawn
 // by the same code as the window: the World view for steps in the world, Light space and PPLS from
 // the light and from the side, both sides of the warp at the step that applies it, and for the last
 // step the Camera, Shadow map and Error views. Then "What goes wrong": the run's misclassified
 // pixels ranked by cause, each cause's meaning and its remedy measured (what it removes, what it
-// adds), and the Error view coloured by cause.
+// adds), and the Error view coloured by cause. With --interactive, DIR/index.html alone: the steps'
+// views to orbit in the browser (interactive_lesson.hpp).
 #include <map>
 #include <string>
 
@@ -23,9 +25,10 @@ struct LessonOptions {
     int width = 640, height = 400;  // each picture
     bool row_vectors = false;       // matrices as the papers print them (the transpose of ours)
     std::string out;                // the directory; created if missing
+    bool interactive = false;       // one self-contained page whose views orbit (interactive_lesson.hpp)
 };
 
-// Writes the page and its pictures (needs X: xvfb-run); returns the number of pictures. Throws on
+// Writes the page and its pictures (needs X: xvfb-run); returns the number of pictures (views). Throws on
 // bad input, naming the option or the file.
 int run_lesson(const LessonOptions& options);
 

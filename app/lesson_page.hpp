@@ -1,0 +1,46 @@
+#pragma once
+// What both lesson pages share (lesson_command.cpp's pictures, interactive_lesson.cpp's orbitable
+// views): the inspection a lesson explains, which views show each step, and the page's HTML text:
+// the head with the method's description, a step's values with matrices as 4 x 4 tables.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/value_text.hpp"
+#include "lesson_command.hpp"
+#include "views/space_parts.hpp"
+
+namespace shadowlab {
+
+struct Picture {
+    const View* view;
+    SpacePreset preset;
+    std::string title;  // what the picture shows, under it
+};
+
+Inspection inspect_for_lesson(const LessonOptions& options);
+
+// The pictures that show step `i`: its space from the side and from the light (an orbit for the
+// world), both sides of the warp at the first step in PPLS, and the result after the last step.
+std::vector<Picture> pictures_of(const Inspection& in, size_t i);
+
+// A picture's size: the scene camera's aspect within the asked size for a view through the camera.
+glm::ivec2 picture_size(const Inspection& in, const Picture& picture, const LessonOptions& options);
+
+std::string html_escaped(const std::string& text);
+
+// The step's values, a matrix as a 4 x 4 table (4 significant digits shown, all 17 on hover).
+std::string values_table(const Step& step, MatrixLayout layout);
+
+// "Step 3 of 10: title", the formula, the space and the values.
+std::string step_heading(const Step& step, size_t i, size_t count, MatrixLayout layout);
+
+// <!DOCTYPE html> to the end of the introduction: the title, the method's description, the
+// scene, the map's size, the notes. `style` is added to the pages' shared style sheet.
+std::string page_head(const Inspection& in, const LessonOptions& options, MatrixLayout layout,
+                      const std::string& style = "");
+
+// Throws std::runtime_error naming the file when it cannot be written.
+void write_page(const std::filesystem::path& file, const std::string& html);
+
+}  // namespace shadowlab
