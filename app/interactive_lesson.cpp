@@ -1,5 +1,7 @@
 #include "interactive_lesson.hpp"
 
+#include <unordered_map>
+
 #include <nlohmann/json.hpp>
 
 #include "lesson_script.hpp"
@@ -51,6 +53,23 @@ std::string script_safe(const json& data) {
     return out;
 }
 
+// The views' coordinate and colour arrays, each stored once: the scene's triangles recur in the
+// views of many steps. {"arrays": [...], "views": the views, each array of a shape longer than one
+// point replaced by {"pooled": its index in "arrays"}} (web/src/lesson.js puts them back).
+json pooled(json views) {
+    json arrays = json::array();
+    std::unordered_map<std::string, size_t> index;
+    for (json& view : views)
+        for (json& shape : view["shapes"])
+            for (auto& [key, value] : shape.items()) {
+                if (!value.is_array() || value.size() <= 3) continue;
+                const auto [at, added] = index.try_emplace(value.dump(), arrays.size());
+                if (added) arrays.push_back(std::move(value));
+                value = json{{"pooled", at->second}};
+            }
+    return {{"arrays", std::move(arrays)}, {"views", std::move(views)}};
+}
+
 std::string figure(const std::string& content, const std::string& caption) {
     return "<figure>" + content + "<figcaption>" + html_escaped(caption) + "</figcaption></figure>";
 }
@@ -97,8 +116,9 @@ int write_interactive_lesson(const Inspection& in, const LessonOptions& o, Matri
     }
     write_page(file, page_head(in, o, layout, kStyle) + "<div class=\"lesson\"><nav id=\"steps\">\n" + buttons +
                          "</nav><main>\n" + sections + "</main></div>\n<pre id=\"selftest\" hidden></pre>\n" +
-                         "<script type=\"application/json\" id=\"lesson-scenes\">" + script_safe(scenes) +
-                         "</script>\n<script>" + std::string(lesson_script()) + "</script>\n</body></html>\n");
+                         "<script type=\"application/json\" id=\"lesson-scenes\">" +
+                         script_safe(pooled(std::move(scenes))) + "</script>\n<script>" + std::string(lesson_script()) +
+                         "</script>\n</body></html>\n");
     return views;
 }
 

@@ -9,6 +9,7 @@ step has a canvas and every canvas draws (at least 1 % of its pixels are not the
 the first canvas draws a different picture at every step.
 Needs an X display for `shadowlab lesson` (run ctest under xvfb-run)."""
 import argparse
+import concurrent.futures
 import html
 import json
 import os
@@ -84,17 +85,20 @@ def main():
     parser.add_argument("--chromium", default="chromium")
     parser.add_argument("--methods", nargs="+", default=["lispsm", "xpsm"])
     args = parser.parse_args()
-    problems = []
     with tempfile.TemporaryDirectory() as work:
-        for method in args.methods:
+        def lesson_in_browser(method):
             out = os.path.join(work, method)
-            run([args.shadowlab, "lesson", args.scene, "--method", method, "--interactive", "--size", "480x300",
+            run([args.shadowlab, "lesson", args.scene, "--method", method, "--interactive", "--size", "320x200",
                  "--out", out])
             page_file = os.path.join(out, "index.html")
             with open(page_file, encoding="utf-8") as f:
                 page = f.read()
             results, uncaught = self_test(args.chromium, page_file)
-            problems += check(method, trace_step_ids(args.shadowlab, args.scene, method), results, uncaught, page)
+            return check(method, trace_step_ids(args.shadowlab, args.scene, method), results, uncaught, page)
+
+        # The methods side by side: each waits mostly on one browser process.
+        with concurrent.futures.ThreadPoolExecutor() as pool:
+            problems = [p for found in pool.map(lesson_in_browser, args.methods) for p in found]
     for p in problems:
         print(p)
     print(f"{len(args.methods) - len({p.split(':')[0] for p in problems})} passed, "

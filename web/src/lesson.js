@@ -17,7 +17,10 @@ function viewAt(slot) {
   return views[slot];
 }
 
-const scenes = JSON.parse(document.getElementById('lesson-scenes').textContent);
+// The exported views, each array stored once on the page put back where it is used.
+const { arrays, views: scenes } = JSON.parse(document.getElementById('lesson-scenes').textContent);
+for (const shape of scenes.flatMap((scene) => scene.shapes))
+  for (const [key, value] of Object.entries(shape)) if (value?.pooled !== undefined) shape[key] = arrays[value.pooled];
 const buttons = Array.from(document.querySelectorAll('#steps button'));
 const sections = Array.from(document.querySelectorAll('section.step'));
 let shown = [];
