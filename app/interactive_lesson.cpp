@@ -7,6 +7,7 @@
 #include "lesson_script.hpp"
 #include "views/offscreen_view.hpp"
 #include "views/view_export.hpp"
+#include "what_goes_wrong.hpp"
 
 namespace shadowlab {
 namespace {
@@ -70,8 +71,9 @@ json pooled(json views) {
     return {{"arrays", std::move(arrays)}, {"views", std::move(views)}};
 }
 
-std::string figure(const std::string& content, const std::string& caption) {
-    return "<figure>" + content + "<figcaption>" + html_escaped(caption) + "</figcaption></figure>";
+// A picture inlined in the page as a PNG data URI.
+std::string inlined(const RgbImage& image, const std::string&) {
+    return "data:image/png;base64," + base64(png_bytes(image));
 }
 
 // A step's picture on the page: a view that draws the trace's steps as its scene to orbit (its
@@ -83,14 +85,11 @@ std::string picture_html(const Inspection& in, const Step& step, const Picture& 
     const std::string width = std::to_string(size.x) + "px", height = std::to_string(size.y) + "px";
     if (p.view->interaction.draws_steps) {
         scenes.push_back(exported_view(in, *p.view, options, size.x, size.y));
-        return figure("<div class=\"orbit\" data-scene=\"" + std::to_string(scenes.size() - 1) +
-                          "\" style=\"width: " + width + "; height: " + height + "\"></div>",
-                      p.title + " (drag to orbit, wheel to zoom)");
+        return "<figure><div class=\"orbit\" data-scene=\"" + std::to_string(scenes.size() - 1) +
+               "\" style=\"width: " + width + "; height: " + height + "\"></div><figcaption>" + html_escaped(p.title) +
+               " (drag to orbit, wheel to zoom)</figcaption></figure>";
     }
-    const std::string png = png_bytes(render_view(in, *p.view, options, size.x, size.y));
-    return figure("<img src=\"data:image/png;base64," + base64(png) + "\" width=\"" + std::to_string(size.x) +
-                      "\" alt=\"" + html_escaped(p.title) + "\">",
-                  p.title);
+    return picture_figure(inlined(render_view(in, *p.view, options, size.x, size.y), ""), size.x, p.title);
 }
 
 }  // namespace
@@ -114,6 +113,8 @@ int write_interactive_lesson(const Inspection& in, const LessonOptions& o, Matri
         }
         sections += "</div></section>\n";
     }
+    sections += what_goes_wrong(in, o, inlined);  // below every step, its Error view by cause
+    ++views;
     write_page(file, page_head(in, o, layout, kStyle) + "<div class=\"lesson\"><nav id=\"steps\">\n" + buttons +
                          "</nav><main>\n" + sections + "</main></div>\n<pre id=\"selftest\" hidden></pre>\n" +
                          "<script type=\"application/json\" id=\"lesson-scenes\">" +

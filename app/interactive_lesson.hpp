@@ -3,7 +3,8 @@
 // list of steps, each step's formula and values, and its World, Light space and PPLS views as 3D
 // scenes to orbit in the browser: the shapes the views draw, in their spaces, read back from the
 // views as built (views/view_export.hpp) and drawn again by three.js (web/src/lesson.js, bundled at
-// build time and inlined). Views that show pictures (Camera, Shadow map, Error) are inlined PNGs.
+// build time and inlined). Views that show pictures (Camera, Shadow map, Error) are inlined PNGs;
+// "What goes wrong" (what_goes_wrong.hpp) follows the steps, as on the static page.
 // `index.html?selftest` clicks every step and writes what each canvas drew into <pre id="selftest">
 // (tests/interactive_lesson_test.py reads it in headless Chromium).
 #include <filesystem>

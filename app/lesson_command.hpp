@@ -8,7 +8,7 @@
 // step the Camera, Shadow map and Error views. Then "What goes wrong": the run's misclassified
 // pixels ranked by cause, each cause's meaning and its remedy measured (what it removes, what it
 // adds), and the Error view coloured by cause. With --interactive, DIR/index.html alone: the steps'
-// views to orbit in the browser (interactive_lesson.hpp).
+// views to orbit in the browser, then What goes wrong (interactive_lesson.hpp).
 #include <map>
 #include <string>
 

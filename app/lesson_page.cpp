@@ -111,6 +111,11 @@ std::string html_escaped(const std::string& text) {
     return out;
 }
 
+std::string picture_figure(const std::string& src, int width, const std::string& caption) {
+    return "<figure><img src=\"" + src + "\" width=\"" + std::to_string(width) + "\" alt=\"" + html_escaped(caption) +
+           "\"><figcaption>" + html_escaped(caption) + "</figcaption></figure>";
+}
+
 std::string values_table(const Step& step, MatrixLayout layout) {
     if (step.values.empty()) return "";
     std::string out = "<table class=\"values\">";

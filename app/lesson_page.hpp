@@ -3,6 +3,7 @@
 // views): the inspection a lesson explains, which views show each step, and the page's HTML text:
 // the head with the method's description, a step's values with matrices as 4 x 4 tables.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,13 @@ std::vector<Picture> pictures_of(const Inspection& in, size_t i);
 glm::ivec2 picture_size(const Inspection& in, const Picture& picture, const LessonOptions& options);
 
 std::string html_escaped(const std::string& text);
+
+// Where a page keeps a picture: given the image and a file name for it, the <img> element's src
+// (the static page writes the file beside itself, the interactive page inlines it as a data URI).
+using PictureSource = std::function<std::string(const RgbImage& image, const std::string& name)>;
+
+// <figure> with the picture at `src` shown `width` pixels wide and its caption (also its alt text).
+std::string picture_figure(const std::string& src, int width, const std::string& caption);
 
 // The step's values, a matrix as a 4 x 4 table (4 significant digits shown, all 17 on hover).
 std::string values_table(const Step& step, MatrixLayout layout);

@@ -6,7 +6,7 @@ canvases drew and the errors the page met (web/src/self_test.js). Asserts: the p
 that loads nothing from elsewhere; no error, no uncaught exception in Chromium's log; one button per
 step of the method's trace (`inspect --json`), in order; each click shows that step alone; each
 step has a canvas and every canvas draws (at least 1 % of its pixels are not the background);
-the first canvas draws a different picture at every step.
+the first canvas draws a different picture at every step; What goes wrong follows the steps.
 Needs an X display for `shadowlab lesson` (run ctest under xvfb-run)."""
 import argparse
 import concurrent.futures
@@ -55,6 +55,8 @@ def check(method, step_ids, results, uncaught, page):
     problems = []
     if outside_references(page):
         problems.append(f"the page loads from elsewhere: {outside_references(page)[:3]}")
+    if '<section id="what-goes-wrong">' not in page:
+        problems.append("the page has no What goes wrong section")
     if results["errors"] or uncaught:
         problems.append(f"errors: {results['errors'] + uncaught}")
     steps = results["steps"]
