@@ -3,7 +3,8 @@
 headless Chromium (Debian's `chromium`, WebGL by SwiftShader) with ?selftest, which clicks every
 step button and writes, into <pre id="selftest">, the step each click showed, what each of its
 canvases drew and the errors the page met (web/src/self_test.js). Asserts: the page is one file
-that loads nothing from elsewhere; no error, no uncaught exception in Chromium's log; one button per
+that loads nothing from elsewhere; no error recorded by the page and nothing written to the console
+(Chromium's log: errors, uncaught exceptions, warnings); one button per
 step of the method's trace (`inspect --json`), in order; each click shows that step alone; each
 step has a canvas and every canvas draws (at least 1 % of its pixels are not the background);
 the first canvas draws a different picture at every step; What goes wrong follows the steps.
@@ -47,18 +48,20 @@ def self_test(chromium, page_file):
     found = re.search(r'<pre id="selftest"[^>]*>(.*?)</pre>', result.stdout, re.S)
     if not found or not found.group(1).strip():
         sys.exit(f"{page_file}: the page wrote no self-test results\n{result.stderr[-3000:]}")
-    uncaught = [line for line in result.stderr.splitlines() if "CONSOLE" in line and "Uncaught" in line]
-    return json.loads(html.unescape(found.group(1))), uncaught
+    # The page writes nothing to the console: any line there (an error, an uncaught exception, a
+    # warning of three.js) is a problem, wherever on the page it came from.
+    console = [line for line in result.stderr.splitlines() if ":CONSOLE" in line]
+    return json.loads(html.unescape(found.group(1))), console
 
 
-def check(method, step_ids, results, uncaught, page):
+def check(method, step_ids, results, console, page):
     problems = []
     if outside_references(page):
         problems.append(f"the page loads from elsewhere: {outside_references(page)[:3]}")
     if '<section id="what-goes-wrong">' not in page:
         problems.append("the page has no What goes wrong section")
-    if results["errors"] or uncaught:
-        problems.append(f"errors: {results['errors'] + uncaught}")
+    if results["errors"] or console:
+        problems.append(f"errors: {results['errors']}; console: {console}")
     steps = results["steps"]
     buttons = [step["button"] for step in steps]
     if not step_ids or buttons != step_ids:
@@ -95,8 +98,8 @@ def main():
             page_file = os.path.join(out, "index.html")
             with open(page_file, encoding="utf-8") as f:
                 page = f.read()
-            results, uncaught = self_test(args.chromium, page_file)
-            return check(method, trace_step_ids(args.shadowlab, args.scene, method), results, uncaught, page)
+            results, console = self_test(args.chromium, page_file)
+            return check(method, trace_step_ids(args.shadowlab, args.scene, method), results, console, page)
 
         # The methods side by side: each waits mostly on one browser process.
         with concurrent.futures.ThreadPoolExecutor() as pool:
