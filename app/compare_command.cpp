@@ -2,14 +2,14 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <stdexcept>
 
-#include "lesson_command.hpp"
+#include "lesson_page.hpp"
 #include "limits.hpp"
 #include "measure_command.hpp"
 #include "views/offscreen_view.hpp"
+#include "what_goes_wrong.hpp"
 
 namespace shadowlab {
 namespace {
@@ -116,12 +116,6 @@ std::string markdown_table(const Configuration& a, const Configuration& b, const
     return md + "\n![Difference](difference.png)\n";
 }
 
-void write_text(const std::filesystem::path& file, const std::string& text) {
-    std::ofstream out(file);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + file.string());
-}
-
 Json run_json(const Configuration& c) {
     Json json = to_json(c.run);
     json["diagnosis"] = to_json(c.diagnosis);
@@ -153,8 +147,8 @@ Json run_compare(const CompareOptions& o) {
                        {"a", run_json(a)},
                        {"b", run_json(b)},
                        {"comparison", to_json(comparison)}};
-    write_text(dir / "compare.json", json.dump(1) + "\n");
-    write_text(dir / "compare.md", markdown_table(a, b, comparison, context));
+    write_text_file(dir / "compare.json", json.dump(1) + "\n");
+    write_text_file(dir / "compare.md", markdown_table(a, b, comparison, context));
 
     const Inspection in_a = inspected(context, a, o), in_b = inspected(context, b, o);
     ViewOptions difference{.width = context.reference.width, .height = context.reference.height};
@@ -165,15 +159,21 @@ Json run_compare(const CompareOptions& o) {
     std::string lesson = "<h1>" + a.method->name + " (A) against " + b.method->name +
                          " (B)</h1>\n<figure><img src=\"difference.png\" alt=\"Difference\"><figcaption>Where the "
                          "verdicts differ, who is right: orange A, blue B</figcaption></figure>\n";
+    const PictureSource beside_page = [&](const RgbImage& image, const std::string& name) {
+        write_png(image, (dir / name).string());
+        return name;
+    };
     for (const auto& [c, in] : {std::pair{&a, &in_a}, std::pair{&b, &in_b}})
         lesson += what_goes_wrong_section(
             *in, context, c->run, c->diagnosis,
             {.id = "what-goes-wrong-" + c->label,
              .heading = c->label + ": " + c->method->name + " (" + given(c->overrides) + "): what goes wrong",
-             .file = dir / ("error-causes-" + c->label + ".png"),
+             .picture = "error-causes-" + c->label + ".png",
              .width = context.reference.width,
-             .height = context.reference.height});
-    write_text(dir / "lesson.html", lesson_page("compare: " + a.method->name + " against " + b.method->name, lesson));
+             .height = context.reference.height},
+            beside_page);
+    write_text_file(dir / "lesson.html",
+                    lesson_page("compare: " + a.method->name + " against " + b.method->name, lesson));
     return json;
 }
 

@@ -204,6 +204,9 @@ int main(int argc, char** argv) {
     lesson_cmd->add_option("--resolution,-r", lesson.resolution, "shadow map resolution")->capture_default_str();
     lesson_cmd->add_option("--size", lesson_size, "size of each picture WxH")->capture_default_str();
     lesson_cmd->add_flag("--row-vectors", lesson.row_vectors, "matrices as the papers print them (row vectors)");
+    lesson_cmd->add_flag("--interactive", lesson.interactive,
+                         "one self-contained page (index.html, opens offline) whose World, Light space and PPLS "
+                         "views orbit in the browser");
     lesson_cmd->add_option("--out,-o", lesson.out, "directory to write index.html and its pictures to")->required();
 
     shadowlab::CompareOptions compare;
@@ -288,7 +291,9 @@ int main(int argc, char** argv) {
             lesson.settings = parse_settings(lesson_pairs);
             parse_size(lesson_size, lesson.width, lesson.height);
             const int pictures = shadowlab::run_lesson(lesson);
-            std::cerr << "lesson: " << lesson.out << "/index.html and " << pictures << " pictures\n";
+            std::cerr << "lesson: " << lesson.out << "/index.html"
+                      << (lesson.interactive ? ", self-contained, with " : " and ") << pictures
+                      << (lesson.interactive ? " views\n" : " pictures\n");
             return 0;
         }
         if (app.got_subcommand(compare_cmd)) {

@@ -33,6 +33,14 @@ x $shadowlab render data/scenes/box_on_plane.json --method xpsm --view light --p
 x $shadowlab render data/scenes/box_on_plane.json --method xpsm --view ppls --preset light --step xpsm-13 \
     --size 640x400 --out $images/lesson_xpsm_focus_region.png
 
+# The interactive lesson in a browser (headless Chromium, WebGL by SwiftShader), at LiSPSM's warp.
+lesson=$(mktemp -d)
+x $shadowlab lesson data/scenes/box_on_plane.json --method lispsm --interactive --size 480x300 --out "$lesson"
+chromium --headless --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader --hide-scrollbars \
+    --window-size=1500,1100 --virtual-time-budget=5000 --screenshot=$images/lesson_interactive.png \
+    "file://$lesson/index.html#warp" 2>/dev/null
+rm -rf "$lesson"
+
 # Shadows that read: the teaching scene, and the shadow volumes.
 x $shadowlab render data/scenes/teaching.json --method lispsm --view camera --size 800x450 \
     --out $images/teaching_camera.png

@@ -13,7 +13,13 @@ packages=(
   fonts-dejavu-core  # labels and captions: Greek letters (γ, ε) and superscripts the built-in VTK fonts lack
   clang libclang-rt-14-dev llvm  # the sanitizer build and the fuzzer; llvm-symbolizer for their reports
   clang-format  # the house format, checked by scripts/format_check.sh
+  chromium  # the interactive lesson's browser test (headless, WebGL by SwiftShader)
 )
+# The interactive lesson's script is bundled by npm and esbuild at build time (web/bundle.sh):
+# Debian's node 18 and npm 9, unless a node with its own npm (NodeSource's) is installed already.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -36,13 +36,22 @@ RgbImage from_vtk_image(vtkImageData* data) {
     return image;
 }
 
-void write_png(const RgbImage& image, const std::string& file) {
-    if (!std::ofstream(file, std::ios::binary)) throw std::runtime_error("cannot write " + file);
+std::string png_bytes(const RgbImage& image) {
     vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(file.c_str());
+    writer->WriteToMemoryOn();
     writer->SetInputData(to_vtk_image(image));
     writer->Write();
-    if (writer->GetErrorCode() != 0) throw std::runtime_error("cannot write " + file);
+    vtkUnsignedCharArray* bytes = writer->GetResult();
+    if (writer->GetErrorCode() != 0 || !bytes) throw std::runtime_error("cannot encode a PNG");
+    const auto* first = bytes->GetPointer(0);
+    return std::string(first, first + bytes->GetNumberOfValues());
+}
+
+void write_png(const RgbImage& image, const std::string& file) {
+    const std::string bytes = png_bytes(image);
+    std::ofstream out(file, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out) throw std::runtime_error("cannot write " + file);
 }
 
 RgbImage read_png(const std::string& file) {

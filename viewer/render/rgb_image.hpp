@@ -25,6 +25,8 @@ RgbImage from_vtk_image(vtkImageData* data);  // 3-component unsigned char data
 // What a render window shows now (its back buffer).
 RgbImage grab(vtkRenderWindow* window);
 
+// The image as the bytes of a PNG file.
+std::string png_bytes(const RgbImage& image);
 // Throws std::runtime_error naming the file when it cannot be written.
 void write_png(const RgbImage& image, const std::string& file);
 // An 8-bit RGB PNG, as write_png writes them; throws std::runtime_error naming the file otherwise.

@@ -7,8 +7,8 @@
 
 namespace shadowlab {
 
-RgbImage render_view(const Inspection& inspection, const View& view, const ViewOptions& options, int width,
-                     int height) {
+void with_offscreen_view(const Inspection& inspection, const View& view, const ViewOptions& options, int width,
+                         int height, const UseBuiltView& use) {
     const XDisplay x("views");  // before VTK would open one
     vtkNew<vtkRenderWindow> window;
     // No interactor: initializing one syncs with an X window an offscreen render never maps.
@@ -22,10 +22,19 @@ RgbImage render_view(const Inspection& inspection, const View& view, const ViewO
     window->AddRenderer(renderer);
     ViewOptions sized = options;
     if (sized.width <= 0) sized.width = width, sized.height = height;
-    build_view(renderer, inspection, view, sized);
-    window->Render();
-    RgbImage image = grab(window);
+    const ViewReport report = build_view(renderer, inspection, view, sized);
+    use(window, renderer, report);
     window->Finalize();
+}
+
+RgbImage render_view(const Inspection& inspection, const View& view, const ViewOptions& options, int width,
+                     int height) {
+    RgbImage image;
+    with_offscreen_view(inspection, view, options, width, height,
+                        [&](vtkRenderWindow* window, vtkRenderer*, const ViewReport&) {
+                            window->Render();
+                            image = grab(window);
+                        });
     return image;
 }
 

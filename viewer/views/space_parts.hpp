@@ -60,10 +60,6 @@ glm::dvec3 dimmed(const glm::dvec3& colour);  // halfway to the background: an e
 glm::dvec3 shape_colour(const NamedGeometry& g);
 std::string shape_legend(const NamedGeometry& g, const ShadowSetup& setup);
 
-struct LegendEntry {
-    glm::dvec3 colour;
-    std::string text;
-};
 // A swatch and a line of text per entry, down from the view's top-left corner (the caption is at the bottom).
 void add_legend(vtkRenderer* renderer, const std::vector<LegendEntry>& entries);
 
@@ -86,6 +82,7 @@ public:
     void label(const glm::dvec3& at, const std::string& text, const glm::dvec3& colour);
     void list(const glm::dvec3& colour, const std::string& legend);
     void finish() { add_legend(renderer_, legend_); }
+    const std::vector<LegendEntry>& legend() const { return legend_; }
 
 private:
     vtkRenderer* renderer_;

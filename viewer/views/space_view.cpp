@@ -185,6 +185,7 @@ ViewReport build_space_view(vtkRenderer* renderer, const Inspection& in, Space s
     draw_steps(canvas, in, chosen, chosen + 1, chosen);
     if (world_context && in.has_map()) draw_missed_points(canvas, in);
     canvas.finish();
+    report.legend = canvas.legend();
     place_space_camera(renderer, *frame, options.preset, space);
     add_caption(renderer, caption(in, space, *frame, options, chosen));
     return report;

@@ -64,9 +64,17 @@ struct ViewOptions {
     std::shared_ptr<const Inspection> compared;
 };
 
-// What a view could not draw, for the window's status line: "12 triangles behind w = 0 left out".
+// A legend's line: a swatch of the colour and what it stands for.
+struct LegendEntry {
+    glm::dvec3 colour;
+    std::string text;
+};
+
+// What a view could not draw, for the window's status line: "12 triangles behind w = 0 left out";
+// and what its legend lists, where a page shows it beside the view (the space views').
 struct ViewReport {
     std::vector<std::string> notes;
+    std::vector<LegendEntry> legend;
 };
 
 }  // namespace shadowlab
