@@ -155,7 +155,7 @@ std::string lesson_page(const std::string& title, const std::string& body) {
 
 void write_text_file(const std::filesystem::path& file, const std::string& text) {
     std::ofstream page(file);
-    page << html;
+    page << text;
     if (!page) throw std::runtime_error("cannot write " + file.string());
 }
 
