@@ -13,6 +13,8 @@ packages=(
   fonts-dejavu-core  # labels and captions: Greek letters (γ, ε) and superscripts the built-in VTK fonts lack
   clang libclang-rt-14-dev llvm  # the sanitizer build and the fuzzer; llvm-symbolizer for their reports
   clang-format  # the house format, checked by scripts/format_check.sh
+  pybind11-dev python3-dev python3-numpy  # the Python module (python/), for Debian's /usr/bin/python3
+  python3-pandas python3-dask python3-distributed  # its corpus runs on Dask (shadowlab.evaluate, bench --scheduler)
 )
 
 missing=()
