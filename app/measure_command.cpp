@@ -241,7 +241,8 @@ void add_error_point(ChartSeries& series, double x, const Measurement& m) {
 
 MeasureRun measure_on(const MeasureContext& context, const MeasureOptions& o, bool diagnose) {
     const Method& method = method_or_throw(o.method);
-    limits::check(limits::map_resolution, "--resolution", o.resolution);
+    if (method.makes_maps())
+        limits::check(limits::map_resolution, "--resolution", o.resolution);  // a technique has none
     const Settings settings = resolve_settings(method.name, method.settings, o.settings);
     std::cerr << "measure: " << method.name;
     if (method.makes_maps()) std::cerr << " at " << o.resolution << "^2";
@@ -265,7 +266,8 @@ Json to_json(const MeasureRun& run, const MeasureContext& context) {
 
 void run_measure(const MeasureOptions& o) {
     const Method& method = method_or_throw(o.method);
-    limits::check(limits::map_resolution, "--resolution", o.resolution);
+    if (method.makes_maps())
+        limits::check(limits::map_resolution, "--resolution", o.resolution);  // a technique has none
     resolve_settings(method.name, method.settings, o.settings);  // a bad setting stops before the reference
     const MeasureContext context = prepare_with_progress(o.scene_file, o.scene_source, o.width, o.height);
     const MeasureRun run = measure_on(context, o);

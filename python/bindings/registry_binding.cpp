@@ -31,6 +31,7 @@ py::dict method_dict(const Method& method) {
     out["title"] = method.title;
     out["description"] = method.description;
     out["produces"] = to_string(method.produces());
+    out["makes_maps"] = method.makes_maps();
     out["lights"] = method.lights.text();
     py::list settings;
     for (const SettingSpec& spec : method.settings) settings.append(setting_dict(spec));
@@ -49,8 +50,8 @@ void bind_registry(py::module_& module) {
             return out;
         },
         "Every method --method names, in the registry's order: dicts of name, title, description, produces "
-        "('maps' or 'geometry'), lights, and settings (each: name, description, default, and choices or "
-        "min, max, is_list).");
+        "('shadow maps' or 'stencil geometry'), makes_maps, lights, and settings (each: name, description, "
+        "default, and choices or min, max, is_list).");
     module.def(
         "views",
         [] {

@@ -67,7 +67,7 @@ def tasks(scenes, methods=None, resolutions=(256, 512, 1024), paths=(STILL,)):
             raise ValueError(f"unknown method '{name}' (known: {', '.join(registry)})")
     for file in scenes:
         for name in names:
-            if registry[name]["produces"] == "maps":
+            if registry[name]["makes_maps"]:
                 for resolution in resolutions:
                     for path in paths:
                         yield str(file), name, int(resolution), path
