@@ -103,5 +103,5 @@ def evaluate(scenes, methods=None, resolutions=(256, 512, 1024), paths=(STILL,),
     rows = _compute([measure(*run, tuple(size), frames) for run in runs], scheduler, n_workers)
     table = pd.DataFrame(list(rows), columns=COLUMNS).sort_values(KEYS, ignore_index=True)
     if csv:
-        table.to_csv(csv, index=False)
+        table.to_csv(csv, index=False, float_format="%.17g")  # every double read back as it was
     return table
