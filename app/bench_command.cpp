@@ -1,10 +1,14 @@
 #include "bench_command.hpp"
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <unistd.h>
 
 #include "limits.hpp"
 #include "measure_command.hpp"
@@ -114,10 +118,45 @@ ChartSpec efficiency_against_cost(const Runs& runs) {
         Resolutions::largest);
 }
 
+// The runs of `o` as Dask tasks: this process becomes `python3 -m shadowlab.bench` (one
+// implementation of the corpus run: python/shadowlab/corpus.py), the package imported from the build tree.
+[[noreturn]] void run_bench_on_dask(const BenchOptions& o) {
+#ifdef SHADOWLAB_PYTHON_PACKAGE_DIR
+    if (!o.scene_source.camera_matrices.empty() || o.scene_source.choice.camera || o.scene_source.choice.light)
+        throw std::invalid_argument("--scheduler: each scene file's first camera and light only");
+    auto joined = [](const std::vector<std::string>& items) {
+        std::string out;
+        for (const std::string& item : items) {
+            if (!out.empty()) out += ',';
+            out += item;
+        }
+        return out;
+    };
+    std::vector<std::string> resolutions;
+    for (int r : o.resolutions) resolutions.push_back(std::to_string(r));
+    std::vector<std::string> args{SHADOWLAB_PYTHON_EXECUTABLE, "-m", "shadowlab.bench"};
+    args.insert(args.end(), o.scene_files.begin(), o.scene_files.end());
+    args.insert(args.end(), {"--methods", joined(o.methods), "--resolutions", joined(resolutions), "--size",
+                             std::to_string(o.width) + "x" + std::to_string(o.height), "--scheduler", o.scheduler,
+                             "--out", o.out_dir});
+    const char* path = std::getenv("PYTHONPATH");
+    setenv("PYTHONPATH", (SHADOWLAB_PYTHON_PACKAGE_DIR + std::string(path ? ":" + std::string(path) : "")).c_str(), 1);
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    throw std::runtime_error("--scheduler: cannot run " + args[0] + ": " + std::strerror(errno));
+#else
+    throw std::invalid_argument(
+        "--scheduler: this build has no Python module (configured with -DSHADOWLAB_PYTHON=OFF)");
+#endif
+}
+
 }  // namespace
 
 void run_bench(const BenchOptions& o) {
     if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
+    if (!o.scheduler.empty()) run_bench_on_dask(o);
     const std::vector<const Method*> methods = methods_named(o.methods);
     for (int r : o.resolutions) limits::check(limits::map_resolution, "--resolutions", r);
     std::filesystem::create_directories(o.out_dir);

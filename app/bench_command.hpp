@@ -3,7 +3,9 @@
 // every method at every resolution on every scene; DIR/bench.csv, DIR/bench.png (error against
 // cost, one line per method), DIR/bench_aliasing.png (max perspective m against cost) and
 // DIR/bench_storage.png (storage efficiency against cost, a point per map method). With
-// --filters: the filters' error against their cost instead (filter_bench.hpp).
+// --filters: the filters' error against their cost instead (filter_bench.hpp). With --scheduler ADDR
+// the runs are Dask tasks instead, on that scheduler (or `local`: a LocalCluster of two worker
+// processes): the Python package's evaluate (python/shadowlab/corpus.py) writes DIR/bench.csv.
 #include <string>
 #include <vector>
 
@@ -18,7 +20,8 @@ struct BenchOptions {
     std::vector<int> resolutions{256, 512, 1024, 2048, 4096};
     int width = 640, height = 360;
     std::string out_dir;
-    bool filters = false;  // each filter instead of each resolution (filter_bench.hpp)
+    bool filters = false;   // each filter instead of each resolution (filter_bench.hpp)
+    std::string scheduler;  // non-empty: the runs as Dask tasks on this scheduler's address, or `local`
 };
 
 void run_bench(const BenchOptions& options);

@@ -125,6 +125,9 @@ int main(int argc, char** argv) {
     bench_cmd->add_flag("--filters", bench.filters,
                         "each filter at a few kernel sizes (the methods at the first resolution): visibility error "
                         "against lookup cost");
+    bench_cmd->add_option("--scheduler", bench.scheduler,
+                          "the runs as Dask tasks on this scheduler (tcp://host:8786), or local: a LocalCluster of two "
+                          "worker processes; writes bench.csv (README: Corpus runs on Dask)");
 
     shadowlab::SweepOptions sweep;
     std::string sweep_size = "480x270";

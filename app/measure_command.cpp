@@ -221,11 +221,17 @@ std::vector<const Method*> methods_named(const std::vector<std::string>& names) 
 }
 
 MeasureContext prepare_with_progress(const std::string& scene_file, const SceneSource& source, int width, int height) {
+    // A bad size stops before the scene is read.
     limits::check(limits::image_side, "--size width", width);
     limits::check(limits::image_side, "--size height", height);
-    const Scene scene = load_scene_source(scene_file, source);
+    return prepare_with_progress(load_scene_source(scene_file, source), scene_file, width, height);
+}
+
+MeasureContext prepare_with_progress(const Scene& scene, const std::string& label, int width, int height) {
+    limits::check(limits::image_side, "--size width", width);
+    limits::check(limits::image_side, "--size height", height);
     const glm::ivec2 image = image_size_within(scene.camera, width, height);
-    std::cerr << "measure: exact reference of " << scene_file << " (" << image.x << "x" << image.y;
+    std::cerr << "measure: exact reference of " << label << " (" << image.x << "x" << image.y;
     if (image != glm::ivec2(width, height))
         std::cerr << ": the camera's aspect " << scene.camera.aspect << " within " << width << "x" << height;
     std::cerr << ", Embree rays)..." << std::flush;
@@ -248,27 +254,43 @@ void add_error_point(ChartSeries& series, double x, const Measurement& m) {
     series.marked.push_back(!m.notes().empty());
 }
 
-void run_measure(const MeasureOptions& o) {
+MeasureRun measure_on(const MeasureContext& context, const MeasureOptions& o, bool diagnose) {
     const Method& method = method_or_throw(o.method);
-    limits::check(limits::map_resolution, "--resolution", o.resolution);
+    if (method.makes_maps())
+        limits::check(limits::map_resolution, "--resolution", o.resolution);  // a technique has none
     const Settings settings = resolve_settings(method.name, method.settings, o.settings);
-    const MeasureContext context = prepare_with_progress(o.scene_file, o.scene_source, o.width, o.height);
     std::cerr << "measure: " << method.name;
     if (method.makes_maps()) std::cerr << " at " << o.resolution << "^2";
     std::cerr << "...\n";
-    const Measurement m = measure(context, method, settings, o.resolution, o.bias);
-    const Diagnosis diagnosis =
-        diagnose(context, method, settings, o.resolution, o.bias, m, [](const CauseInfo& cause, const Remedy& remedy) {
-            std::cerr << "measure: remedy for " << cause.name << ": " << remedy.change << "...\n";
-        });
+    MeasureRun run{.measurement = measure(context, method, settings, o.resolution, o.bias)};
+    if (diagnose)
+        run.diagnosis = shadowlab::diagnose(context, method, settings, o.resolution, o.bias, run.measurement,
+                                            [](const CauseInfo& cause, const Remedy& remedy) {
+                                                std::cerr << "measure: remedy for " << cause.name << ": "
+                                                          << remedy.change << "...\n";
+                                            });
+    return run;
+}
+
+Json to_json(const MeasureRun& run, const MeasureContext& context) {
+    Json json = to_json(run.measurement);
+    if (run.diagnosis) json["diagnosis"] = to_json(*run.diagnosis);
+    json["image"] = {context.reference.width, context.reference.height};  // the size the camera's aspect left
+    return json;
+}
+
+void run_measure(const MeasureOptions& o) {
+    const Method& method = method_or_throw(o.method);
+    if (method.makes_maps())
+        limits::check(limits::map_resolution, "--resolution", o.resolution);  // a technique has none
+    resolve_settings(method.name, method.settings, o.settings);  // a bad setting stops before the reference
+    const MeasureContext context = prepare_with_progress(o.scene_file, o.scene_source, o.width, o.height);
+    const MeasureRun run = measure_on(context, o);
     if (o.json) {
-        Json json = to_json(m);
-        json["diagnosis"] = to_json(diagnosis);
-        json["image"] = {context.reference.width, context.reference.height};  // the size the camera's aspect left
-        std::cout << json.dump(1) << "\n";
+        std::cout << to_json(run, context).dump(1) << "\n";
     } else {
-        print_text(m, {context.reference.width, context.reference.height});
-        print_text(diagnosis);
+        print_text(run.measurement, {context.reference.width, context.reference.height});
+        print_text(*run.diagnosis);
     }
 }
 

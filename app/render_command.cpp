@@ -74,7 +74,7 @@ void turn_light(Scene& scene, const std::string& angles) {
 
 }  // namespace
 
-void run_render(const RenderOptions& options) {
+RgbImage render_image(Scene scene, const RenderOptions& options) {
     limits::check(limits::image_side, "--size width", options.width);
     limits::check(limits::image_side, "--size height", options.height);
     const View* view = find_view(options.view);
@@ -84,7 +84,6 @@ void run_render(const RenderOptions& options) {
     const TextureShown texture = texture_or_throw(options.texture);
     const SpacePreset preset = preset_or_throw(options.preset);
     const MapOverlay overlay = overlay_or_throw(options.overlay);
-    Scene scene = load_scene_source(options.scene_file, options.scene_source);
     turn_light(scene, options.light);
     // The camera keeps its aspect: its image is the largest of that shape within --size; the Camera
     // view is drawn at that size, the other views fill --size (their images are letterboxed).
@@ -109,14 +108,20 @@ void run_render(const RenderOptions& options) {
     view_options.preset = preset;
     view_options.scene_in_ppls = options.scene_in_ppls;
     view_options.overlay = overlay;
-    const RgbImage image = render_view(inspection, *view, view_options, size.x, size.y);
+    return render_view(inspection, *view, view_options, size.x, size.y);
+}
+
+void run_render(const RenderOptions& options) {
+    const RgbImage image = render_image(load_scene_source(options.scene_file, options.scene_source), options);
     write_png(image, options.out);
-    std::cerr << "render: " << view->name << " view of " << options.scene_file << " (" << inspection.name();
-    if (inspection.has_map())
-        std::cerr << ", " << inspection.resolution << "² map, bias "
-                  << (inspection.bias < 0.0 ? "slope-scaled" : std::to_string(inspection.bias));
-    std::cerr << ") -> " << options.out << ", " << size.x << "x" << size.y;
-    if (size != glm::ivec2(options.width, options.height)) std::cerr << " (the camera's aspect within --size)";
+    const Method& method = method_or_throw(options.method);
+    std::cerr << "render: " << options.view << " view of " << options.scene_file << " (" << method.name;
+    if (method.makes_maps())
+        std::cerr << ", " << options.resolution << "² map, bias "
+                  << (options.bias < 0.0 ? "slope-scaled" : std::to_string(options.bias));
+    std::cerr << ") -> " << options.out << ", " << image.width << "x" << image.height;
+    if (glm::ivec2(image.width, image.height) != glm::ivec2(options.width, options.height))
+        std::cerr << " (the camera's aspect within --size)";
     std::cerr << "\n";
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "render/rgb_image.hpp"
 #include "scene_source.hpp"
 
 namespace shadowlab {
@@ -30,6 +31,11 @@ struct RenderOptions {
         "none";  // Camera view of a map method: none, cascade (each surface's map) or texels (per pixel)
     std::string out;
 };
+
+// The view of `scene` drawn offscreen as `options` ask (not their scene file or out); notes and
+// fallbacks go to stderr. Throws on bad input, std::runtime_error without an X display. The Python
+// module's render is this call.
+RgbImage render_image(Scene scene, const RenderOptions& options);
 
 // Draws the view offscreen and writes the PNG; notes and fallbacks go to stderr. Throws on bad input.
 void run_render(const RenderOptions& options);

@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "limits.hpp"
-#include "metrics/shimmer.hpp"
 #include "plot/shimmer_chart.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -26,25 +25,36 @@ CameraPath path_or_throw(const ShimmerOptions& o) {
     return {*kind, o.frames, o.step};
 }
 
-}  // namespace
-
-void run_shimmer(const ShimmerOptions& o) {
-    if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
+// The map method to follow and its settings; throws for a technique, a bad setting or resolution.
+std::pair<const Method&, Settings> method_to_follow(const ShimmerOptions& o) {
     limits::check(limits::map_resolution, "--resolution", o.resolution);
-    limits::check(limits::image_side, "--size width", o.width);
-    limits::check(limits::image_side, "--size height", o.height);
-    const CameraPath path = path_or_throw(o);
     const Method& method = method_or_throw(o.method);
     if (!method.makes_maps())
         throw std::invalid_argument("--method: " + method.name + " is a geometric technique: it has no map to shimmer");
-    const Settings settings = resolve_settings(method.name, method.settings, o.settings);
-    const MeasureContext context =
-        prepare_measurement(load_scene_source(o.scene_file, o.scene_source), o.width, o.height);
+    return {method, resolve_settings(method.name, method.settings, o.settings)};
+}
+
+}  // namespace
+
+Shimmer shimmer_on(const MeasureContext& context, const ShimmerOptions& o) {
+    const CameraPath path = path_or_throw(o);
+    const auto [method, settings] = method_to_follow(o);
     const std::vector<ShimmerSample> samples = shimmer_samples(context);
     std::cerr << "shimmer: " << method.name << ", " << samples.size() << " fixed receiver points, " << path.frames
               << " frames, " << to_string(path.kind) << " by " << step_per_frame(path, context.scene.camera)
               << (path.kind == CameraPath::Kind::rotate ? "° per frame\n" : " per frame\n");
-    const Shimmer shimmer = measure_shimmer(context, samples, method, settings, o.resolution, -1.0, path);
+    return measure_shimmer(context, samples, method, settings, o.resolution, -1.0, path);
+}
+
+void run_shimmer(const ShimmerOptions& o) {
+    if (o.out_dir.empty()) throw std::invalid_argument("--out: a directory is required");
+    const auto [method, settings] = method_to_follow(o);  // bad input stops before the reference is traced
+    limits::check(limits::image_side, "--size width", o.width);
+    limits::check(limits::image_side, "--size height", o.height);
+    const CameraPath path = path_or_throw(o);
+    const MeasureContext context =
+        prepare_measurement(load_scene_source(o.scene_file, o.scene_source), o.width, o.height);
+    const Shimmer shimmer = shimmer_on(context, o);
 
     const std::filesystem::path dir(o.out_dir);
     std::filesystem::create_directories(dir);

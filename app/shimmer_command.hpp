@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "metrics/shimmer.hpp"
 #include "scene_source.hpp"
 
 namespace shadowlab {
@@ -24,6 +25,11 @@ struct ShimmerOptions {
     int width = 640, height = 360;
     std::string out_dir;
 };
+
+// The method of `options` followed along its path from `context`'s camera (its scene file, size and
+// out are not read); throws on bad input, a geometric technique among it. The Python module's
+// shimmer is this call.
+Shimmer shimmer_on(const MeasureContext& context, const ShimmerOptions& options);
 
 void run_shimmer(const ShimmerOptions& options);
 

@@ -14,6 +14,8 @@ packages=(
   clang libclang-rt-14-dev llvm  # the sanitizer build and the fuzzer; llvm-symbolizer for their reports
   clang-format  # the house format, checked by scripts/format_check.sh
   chromium  # the interactive lesson's browser test (headless, WebGL by SwiftShader)
+  pybind11-dev python3-dev python3-numpy  # the Python module (python/), for Debian's /usr/bin/python3
+  python3-pandas python3-dask python3-distributed  # its corpus runs on Dask (shadowlab.evaluate, bench --scheduler)
 )
 # The interactive lesson's script is bundled by npm and esbuild at build time (web/bundle.sh):
 # Debian's node 18 and npm 9, unless a node with its own npm (NodeSource's) is installed already.
