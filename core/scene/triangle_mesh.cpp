@@ -152,15 +152,14 @@ std::vector<std::shared_ptr<const BaseColour>> material_colours(const TriangleMe
             std::string named = source.texture;  // an MTL written on Windows separates folders by '\\'
             std::replace(named.begin(), named.end(), '\\', '/');
             const std::filesystem::path texture = (path.parent_path() / named).lexically_normal();
+            const std::string map_kd = path.filename().string() + ": map_Kd " + named;  // as messages name it
             try {
                 colour.texture = std::make_shared<const ColourTexture>(
                     decode_colour_texture(file_bytes(texture.string()), texture.string()));
             } catch (const SceneError&) {
-                notes.push_back({NoteKind::base_colour_texture_missing,
-                                 path.string() + ": map_Kd " + texture.string() + " not found, its Kd shown"});
+                notes.push_back({NoteKind::base_colour_texture_missing, map_kd + " not found, its Kd shown"});
             } catch (const std::invalid_argument& bad) {
-                notes.push_back({NoteKind::base_colour_texture_missing, path.string() + ": map_Kd " + texture.string() +
-                                                                            ": " + bad.what() + ", its Kd shown"});
+                notes.push_back({NoteKind::base_colour_texture_missing, map_kd + ": " + bad.what() + ", its Kd shown"});
             }
         }
         colours.push_back(std::make_shared<const BaseColour>(std::move(colour)));

@@ -6,6 +6,8 @@
 // loading with its factor alone.
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <iostream>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -118,9 +120,10 @@ void write_obj_quad(const ModelFolder& folder, const std::string& texture, const
   "objects": [{"type": "mesh", "name": "quad", "file": "quad.obj"}]})");
 }
 
-RgbImage camera_view_of(const Scene& scene) {
+// The Camera view under a map method (ShadowMapPass) or a technique (StencilVolumePass).
+RgbImage camera_view_of(const Scene& scene, const std::string& method = "focused") {
     InspectionRequest request;
-    request.method = "focused";
+    request.method = method;
     request.resolution = 1024;
     request.image_width = kWidth;
     request.image_height = kHeight;
@@ -145,8 +148,8 @@ glm::dvec3 as_vector(const Colour& c) { return {double(c[0]), double(c[1]), doub
 
 // Each quadrant's centre shows its texel's colour times one shading factor, the same for every channel
 // and quadrant: the least-squares factor over all twelve channels, each within 4 levels of it.
-void expect_checker(const Scene& scene) {
-    const RgbImage image = camera_view_of(scene);
+void expect_checker(const Scene& scene, const std::string& method) {
+    const RgbImage image = camera_view_of(scene, method);
     const std::vector<std::pair<glm::dvec3, Colour>> quadrants{{{-0.5, 0.5, 0.0}, kTopLeft},
                                                                {{0.5, 0.5, 0.0}, kTopRight},
                                                                {{-0.5, -0.5, 0.0}, kBottomLeft},
@@ -159,12 +162,17 @@ void expect_checker(const Scene& scene) {
     const double shading = seen_times_texel / texel_squared;
     EXPECT_GT(shading, 0.4);  // lit: ambient 0.35 plus diffuse at cos 60°, not tinted as shadowed
     EXPECT_LT(shading, 1.0);  // below white, so that no channel clips
+    double farthest = 0.0;
     for (const auto& [point, texel] : quadrants) {
         const glm::dvec3 seen = colour_at(image, scene.camera, point);
-        for (int c = 0; c < 3; ++c)
+        for (int c = 0; c < 3; ++c) {
             EXPECT_NEAR(seen[c], shading * texel[c], 4.0)
                 << "quadrant at (" << point.x << ", " << point.y << "), channel " << c;
+            farthest = std::max(farthest, std::abs(seen[c] - shading * texel[c]));
+        }
     }
+    std::cout << std::filesystem::path(scene.source_file).filename().string() << " under " << method
+              << ": each quadrant its texel's colour times " << shading << ", within " << farthest << " levels\n";
 }
 
 // The colour an untextured material of linear `factor` shows in the quad's middle, as ratios to its red.
@@ -179,24 +187,37 @@ bool has_note(const Scene& scene, NoteKind kind, const std::string& naming) {
     return false;
 }
 
-}  // namespace
+// The quad as a glTF file or as an OBJ with its MTL, loaded, with its texture as `texture` says: the
+// checker, none, a file named but left behind, or a file that is not a PNG.
+enum class Format { gltf, obj };
+enum class Texture { checker, none, left_behind, not_a_png };
 
-TEST(TexturedModel, GltfQuadShowsItsTexturesColoursInEachQuadrant) {
-    const ModelFolder folder("gltf_checker");
-    folder.write_checker("checker.png");
-    write_gltf_quad(folder, "checker.png", "[1, 1, 1, 1]");
-    const Scene scene = load_scene(folder.file("quad.gltf"));
-    EXPECT_TRUE(scene.notes.empty()) << describe(scene.notes);
-    expect_checker(scene);
+Scene loaded_quad(Format format, Texture texture, const glm::dvec3& factor) {
+    const ModelFolder folder(std::string(format == Format::gltf ? "gltf" : "obj") + "_" +
+                             std::to_string(static_cast<int>(texture)));
+    const std::string file = texture == Texture::checker       ? "checker.png"
+                             : texture == Texture::left_behind ? "left_behind.png"
+                             : texture == Texture::not_a_png   ? "not_a_png.png"
+                                                               : "";
+    if (texture == Texture::checker) folder.write_checker(file);
+    if (texture == Texture::not_a_png) folder.write(file, "GIF89a");
+    const std::string r = std::to_string(factor.r), g = std::to_string(factor.g), b = std::to_string(factor.b);
+    if (format == Format::gltf) {
+        write_gltf_quad(folder, file, "[" + r + ", " + g + ", " + b + ", 1]");
+        return load_scene(folder.file("quad.gltf"));
+    }
+    write_obj_quad(folder, file, r + " " + g + " " + b);
+    return load_scene(folder.file("quad.json"));
 }
 
-TEST(TexturedModel, ObjQuadShowsItsMapKdColoursInEachQuadrant) {
-    const ModelFolder folder("obj_checker");
-    folder.write_checker("checker.png");
-    write_obj_quad(folder, "checker.png", "1 1 1");
-    const Scene scene = load_scene(folder.file("quad.json"));
-    EXPECT_TRUE(scene.notes.empty()) << describe(scene.notes);
-    expect_checker(scene);
+}  // namespace
+
+TEST(TexturedModel, QuadShowsItsTexturesColoursInEachQuadrantFromGltfAndObjUnderBothPasses) {
+    for (const Format format : {Format::gltf, Format::obj}) {
+        const Scene scene = loaded_quad(format, Texture::checker, glm::dvec3(1.0));
+        EXPECT_TRUE(scene.notes.empty()) << describe(scene.notes);
+        for (const std::string method : {"focused", "volumes"}) expect_checker(scene, method);
+    }
 }
 
 // glTF 2.0, 3.9.2: the factor is linear; shown, it is sRGB-encoded: (1, 0.5, 0.2) as (1, 0.735, 0.485)
@@ -205,33 +226,24 @@ TEST(TexturedModel, BaseColourFactorIsShownSrgbEncodedFromGltfAndObj) {
     const glm::dvec2 expected(srgb_from_linear(0.5), srgb_from_linear(0.2));
     ASSERT_NEAR(expected.x, 0.7354, 1e-3);
     ASSERT_NEAR(expected.y, 0.4845, 1e-3);
-    const ModelFolder gltf("gltf_factor");
-    write_gltf_quad(gltf, "", "[1, 0.5, 0.2, 1]");
-    const glm::dvec2 from_gltf = green_and_blue_over_red(load_scene(gltf.file("quad.gltf")));
-    EXPECT_NEAR(from_gltf.x, expected.x, 0.02);
-    EXPECT_NEAR(from_gltf.y, expected.y, 0.02);
-    const ModelFolder obj("obj_factor");
-    write_obj_quad(obj, "", "1 0.5 0.2");
-    const glm::dvec2 from_obj = green_and_blue_over_red(load_scene(obj.file("quad.json")));
-    EXPECT_NEAR(from_obj.x, expected.x, 0.02);
-    EXPECT_NEAR(from_obj.y, expected.y, 0.02);
+    for (const Format format : {Format::gltf, Format::obj}) {
+        const glm::dvec2 seen = green_and_blue_over_red(loaded_quad(format, Texture::none, {1.0, 0.5, 0.2}));
+        EXPECT_NEAR(seen.x, expected.x, 0.02);
+        EXPECT_NEAR(seen.y, expected.y, 0.02);
+    }
 }
 
-// A texture left behind: the model loads, the note names the material and the file, and the quad shows
-// its factor alone (here a linear 0.5 grey: every channel alike).
-TEST(TexturedModel, MissingTextureIsANamedNoteAndTheFactorShows) {
-    const ModelFolder gltf("gltf_missing");
-    write_gltf_quad(gltf, "left_behind.png", "[0.5, 0.5, 0.5, 1]");
-    const Scene from_gltf = load_scene(gltf.file("quad.gltf"));
-    EXPECT_TRUE(has_note(from_gltf, NoteKind::base_colour_texture_missing, "\"checker\": left_behind.png not found"))
-        << describe(from_gltf.notes);
-    const glm::dvec2 grey = green_and_blue_over_red(from_gltf);
+// A texture left behind or unreadable: the model loads, the note names the texture (and a glTF
+// material), and the quad shows its factor alone (here a linear 0.5 grey: every channel alike).
+TEST(TexturedModel, MissingOrUnreadableTextureIsANamedNoteAndTheFactorShows) {
+    const Scene left_behind = loaded_quad(Format::gltf, Texture::left_behind, glm::dvec3(0.5));
+    EXPECT_TRUE(has_note(left_behind, NoteKind::base_colour_texture_missing, "\"checker\": left_behind.png not found"))
+        << describe(left_behind.notes);
+    const glm::dvec2 grey = green_and_blue_over_red(left_behind);
     EXPECT_NEAR(grey.x, 1.0, 0.02);
     EXPECT_NEAR(grey.y, 1.0, 0.02);
-    const ModelFolder obj("obj_unreadable");
-    obj.write("not_a_png.png", "GIF89a");
-    write_obj_quad(obj, "not_a_png.png", "0.5 0.5 0.5");
-    const Scene from_obj = load_scene(obj.file("quad.json"));
-    EXPECT_TRUE(has_note(from_obj, NoteKind::base_colour_texture_missing, "not_a_png.png: not a PNG image"))
-        << describe(from_obj.notes);
+    const Scene unreadable = loaded_quad(Format::obj, Texture::not_a_png, glm::dvec3(0.5));
+    EXPECT_TRUE(
+        has_note(unreadable, NoteKind::base_colour_texture_missing, "quad.obj: map_Kd not_a_png.png: not a PNG image"))
+        << describe(unreadable.notes);
 }
