@@ -74,8 +74,8 @@ std::vector<std::shared_ptr<const AlphaTest>> opacity_alpha_tests(const Triangle
 
 // The base colours of the file's named materials (MaterialColourSource), for SceneObject::material_colour;
 // null for the others, none when no material is named. A texture that is missing or not a PNG is a note
-// in `notes` (base_colour_texture_missing) naming the mesh file, the material and the texture, the
-// material then showing its Kd alone.
+// in `notes` (base_colour_texture_missing: "quad.obj: map_Kd checker.png not found, its Kd shown"),
+// naming the mesh file and the texture as the MTL does, the material then showing its Kd alone.
 std::vector<std::shared_ptr<const BaseColour>> material_colours(const TriangleMesh& mesh, const std::string& file,
                                                                 const std::string& scene_file,
                                                                 std::vector<Note>& notes);
