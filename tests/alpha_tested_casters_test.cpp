@@ -295,10 +295,14 @@ TEST(FenceScene, AMissingTextureCastsOpaqueByNameAndABadOneIsOneLine) {
     }
     const Scene scene = load_scene(missing);
     EXPECT_FALSE(tessellate(scene).alpha_tested());
-    ASSERT_EQ(scene.notes.size(), 1u);
-    EXPECT_EQ(scene.notes[0].kind, NoteKind::alpha_texture_missing);
-    EXPECT_NE(scene.notes[0].message.find("no_such.png not found, opaque"), std::string::npos)
+    // Two consequences, each named: the fence casts opaque, and its colour is its factor alone.
+    ASSERT_EQ(scene.notes.size(), 2u) << describe(scene.notes);
+    EXPECT_EQ(scene.notes[0].kind, NoteKind::base_colour_texture_missing);
+    EXPECT_NE(scene.notes[0].message.find("no_such.png not found, its base colour factor shown"), std::string::npos)
         << scene.notes[0].message;
+    EXPECT_EQ(scene.notes[1].kind, NoteKind::alpha_texture_missing);
+    EXPECT_NE(scene.notes[1].message.find("no_such.png not found, opaque"), std::string::npos)
+        << scene.notes[1].message;
     const std::string not_png = fence_with("not_png.gltf", nlohmann::json::object());
     {
         nlohmann::json gltf = nlohmann::json::parse(std::ifstream(not_png));

@@ -53,6 +53,9 @@ const std::vector<NoteInfo>& all_note_kinds() {
         {alpha_texture_missing, F, "alpha texture missing",
          "an alpha-tested material's texture names a file that is not beside the model (textures left behind): "
          "its casters are opaque, in the maps, the GPU pass and the reference"},
+        {base_colour_texture_missing, F, "base colour texture missing",
+         "a material's base colour texture is not beside the model, not a PNG image ShadowLab reads, or on "
+         "other texture coordinates: the Camera view shows that material's base colour factor alone"},
         {light_without_size, F, "a light without size",
          "PCSS sizes penumbrae by the light's radius or angular radius, here 0: hard shadows"},
         {search_clamped, F, "blocker search clamped",

@@ -40,6 +40,7 @@ enum class NoteKind {
     // Fallbacks of the scene's loading.
     blend_read_as_mask,
     alpha_texture_missing,
+    base_colour_texture_missing,
     // Fallbacks of the lookups' filters.
     light_without_size,
     search_clamped,

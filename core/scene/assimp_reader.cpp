@@ -76,8 +76,10 @@ std::vector<unsigned> face_corners(const aiMesh& mesh, unsigned f, Corners corne
     return {face.mIndices, face.mIndices + face.mNumIndices};
 }
 
+// Each triangle's surface is kept where the mesh has texture coordinates or the file names its materials
+// (their colours: MaterialColourSource), its coordinates (0, 0) where the mesh has none.
 void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& world_from_node, Corners corners_are,
-                 TriangleMesh& out) {
+                 bool materials_named, TriangleMesh& out) {
     std::vector<glm::dvec3> placed(mesh.mNumVertices);
     for (unsigned i = 0; i < mesh.mNumVertices; ++i) placed[i] = to_dvec3(world_from_node * mesh.mVertices[i]);
     std::unordered_map<unsigned, int> welded_of_file;  // a file vertex -> its index in `out`
@@ -95,15 +97,17 @@ void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& wor
         return welded_of_file[file_vertex] = index;
     };
     const aiVector3D* file_uvs = mesh.mNumVertices > 0 ? mesh.mTextureCoords[0] : nullptr;
-    if (file_uvs) out.surfaces.resize(out.triangles.size());  // the meshes before it had none
-    // The triangle's surface, kept parallel to the triangles once any mesh gave texture coordinates.
+    const bool surfaced = file_uvs || materials_named;
+    if (surfaced) out.surfaces.resize(out.triangles.size());  // the meshes before it had none
+    // The triangle's surface, kept parallel to the triangles once any mesh gave one.
     const auto add_surface = [&](const std::array<unsigned, 3>& file_corners) {
-        if (!file_uvs) {
+        if (!surfaced) {
             if (!out.surfaces.empty()) out.surfaces.emplace_back();
             return;
         }
         TriangleSurface surface{.material = static_cast<int>(mesh.mMaterialIndex), .uv = {}};
-        for (int k = 0; k < 3; ++k) surface.uv[k] = {file_uvs[file_corners[k]].x, file_uvs[file_corners[k]].y};
+        if (file_uvs)
+            for (int k = 0; k < 3; ++k) surface.uv[k] = {file_uvs[file_corners[k]].x, file_uvs[file_corners[k]].y};
         out.surfaces.push_back(surface);
     };
     std::vector<int> corners;
@@ -138,7 +142,7 @@ void append_mesh(const aiMesh& mesh, unsigned mesh_index, const aiMatrix4x4& wor
 // (a file whose tree loops back is read as a tree). A child Assimp left missing (its RAW reader
 // allocates a child per mesh and fills fewer) is passed over; the meshes no node reached then
 // follow as one more node, unplaced.
-std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
+std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners, bool materials_named) {
     struct Pending {
         const aiNode* node;
         aiMatrix4x4 world_from_parent;
@@ -163,7 +167,8 @@ std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
         if (node.mNumChildren > 0 && !node.mChildren) throw Malformed{"node \"" + name + "\" has no child list"};
         NodeMesh placed{.node_name = name, .mesh = {}};
         for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-            append_mesh(checked_mesh(scene, node.mMeshes[i]), node.mMeshes[i], world_from_node, corners, placed.mesh);
+            append_mesh(checked_mesh(scene, node.mMeshes[i]), node.mMeshes[i], world_from_node, corners,
+                        materials_named, placed.mesh);
             mesh_placed[node.mMeshes[i]] = true;
         }
         keep(std::move(placed));
@@ -177,7 +182,8 @@ std::vector<NodeMesh> placed_nodes(const aiScene& scene, Corners corners) {
     if (child_missing) {
         NodeMesh unplaced{.node_name = "meshes without a node", .mesh = {}};
         for (unsigned m = 0; m < scene.mNumMeshes; ++m)
-            if (!mesh_placed[m]) append_mesh(checked_mesh(scene, m), m, aiMatrix4x4(), corners, unplaced.mesh);
+            if (!mesh_placed[m])
+                append_mesh(checked_mesh(scene, m), m, aiMatrix4x4(), corners, materials_named, unplaced.mesh);
         keep(std::move(unplaced));
     }
     return nodes;
@@ -195,6 +201,28 @@ std::vector<std::string> opacity_maps(const aiScene& scene) {
     }
     if (std::all_of(maps.begin(), maps.end(), [](const std::string& map) { return map.empty(); })) maps.clear();
     return maps;
+}
+
+// Each material's colour (OBJ's Kd and map_Kd: Assimp's diffuse colour and texture); none at all when the
+// file names no material (Assimp's own default material, named "DefaultMaterial" or not at all, is none of
+// the file's).
+std::vector<MaterialColourSource> colour_sources(const aiScene& scene) {
+    std::vector<MaterialColourSource> sources;
+    for (unsigned m = 0; m < scene.mNumMaterials && scene.mMaterials; ++m) {
+        MaterialColourSource& source = sources.emplace_back();
+        const aiMaterial* material = scene.mMaterials[m];
+        aiString name;
+        if (!material || material->Get(AI_MATKEY_NAME, name) != aiReturn_SUCCESS || name.length == 0 ||
+            std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME)
+            continue;
+        source.named = true;
+        if (aiColor3D diffuse; material->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == aiReturn_SUCCESS)
+            source.diffuse = {diffuse.r, diffuse.g, diffuse.b};
+        if (aiString path; material->GetTexture(aiTextureType_DIFFUSE, 0, &path) == aiReturn_SUCCESS)
+            source.texture = path.C_Str();
+    }
+    if (std::none_of(sources.begin(), sources.end(), [](const auto& source) { return source.named; })) sources.clear();
+    return sources;
 }
 
 // Why Assimp gave no usable scene: its own reason, or (its OBJ reader takes any text and finds
@@ -219,9 +247,13 @@ AssimpRead read_with_assimp(const std::string& path) {
         return {.nodes = {}, .refusal = import_failure(importer, scene), .unreadable = true};
     try {
         if (const std::string bad = non_finite_vertex(*scene); !bad.empty()) return {.nodes = {}, .refusal = bad};
-        std::vector<NodeMesh> nodes = placed_nodes(*scene, corners_of(path));
+        const std::vector<MaterialColourSource> colours = colour_sources(*scene);
+        std::vector<NodeMesh> nodes = placed_nodes(*scene, corners_of(path), !colours.empty());
         const std::vector<std::string> maps = opacity_maps(*scene);
-        for (NodeMesh& node : nodes) node.mesh.opacity_maps = maps;
+        for (NodeMesh& node : nodes) {
+            node.mesh.opacity_maps = maps;
+            node.mesh.colour_sources = colours;
+        }
         return {.nodes = std::move(nodes), .refusal = {}};
     } catch (const Malformed& malformed) {
         return {.nodes = {}, .refusal = "Assimp's reading of it is malformed: " + malformed.what};

@@ -431,8 +431,8 @@ Camera placed_camera(const PlacedLens& lens, const Aabb& meshes, std::vector<std
 }
 
 // Each node holding meshes, as one object that casts and receives; its vertices already in the world,
-// its materials' alpha tests beside it.
-std::vector<SceneObject> node_objects(const std::string& file, const MaterialAlpha& materials) {
+// its materials' alpha tests and base colours beside it.
+std::vector<SceneObject> node_objects(const std::string& file, const GltfMaterials& materials) {
     std::vector<SceneObject> objects;
     // Absolute: load_node_meshes reads a relative path as relative to the scene file's directory.
     for (NodeMesh& node : load_node_meshes(std::filesystem::absolute(file).string(), file, "meshes")) {
@@ -444,6 +444,7 @@ std::vector<SceneObject> node_objects(const std::string& file, const MaterialAlp
         if (std::any_of(materials.tests.begin(), materials.tests.end(),
                         [](const auto& test) { return test != nullptr; }))
             object.material_alpha = materials.tests;
+        object.material_colour = materials.colours;
         objects.push_back(std::move(object));
     }
     return objects;
@@ -489,7 +490,7 @@ GltfScene read_gltf_scene_unvalidated(const std::string& file, const SceneChoice
     Scene& scene = out.scene;
     scene.name = std::filesystem::path(file).stem().string();
     scene.source_file = file;
-    const MaterialAlpha materials = read_material_alpha(fields, root, file);
+    const GltfMaterials materials = read_gltf_materials(fields, root, file);
     scene.objects = node_objects(file, materials);
     scene.notes = materials.notes;
     const Aabb meshes = scene.bounds();

@@ -61,6 +61,7 @@ Scene scene_around_mesh(const std::string& mesh_file) {
     object.mesh_file = mesh_file;
     object.mesh = mesh;
     object.material_alpha = opacity_alpha_tests(*mesh, path, mesh_file, "mesh");
+    object.material_colour = material_colours(*mesh, path, mesh_file, scene.notes);
     scene.camera = camera_framing(mesh->bounds());
     scene.light = sun_beside(scene.camera);
     scene.objects = {ground_under(mesh->bounds(), scene.light), object};

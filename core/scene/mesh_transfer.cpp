@@ -66,6 +66,18 @@ public:
             if (!get_text(texts.emplace_back())) return false;
         return true;
     }
+    // A count, then that many material colours: fails at the first the bytes lack.
+    bool get_colour_sources(std::vector<MaterialColourSource>& sources) {
+        std::uint64_t count = 0;
+        if (!get(count)) return false;
+        for (std::uint64_t i = 0; i < count; ++i) {
+            MaterialColourSource& source = sources.emplace_back();
+            std::uint8_t named = 0;
+            if (!get(named) || !get(source.diffuse) || !get_text(source.texture)) return false;
+            source.named = named != 0;
+        }
+        return true;
+    }
     bool done() const { return at_ == bytes_.size(); }
 
 private:
@@ -98,6 +110,12 @@ std::string encode_node_meshes(const std::vector<NodeMesh>& nodes) {
         out.put_all(node.mesh.surfaces);
         out.put<std::uint64_t>(node.mesh.opacity_maps.size());
         for (const std::string& map : node.mesh.opacity_maps) out.put_text(map);
+        out.put<std::uint64_t>(node.mesh.colour_sources.size());
+        for (const MaterialColourSource& source : node.mesh.colour_sources) {
+            out.put<std::uint8_t>(source.named);
+            out.put(source.diffuse);
+            out.put_text(source.texture);
+        }
         out.put<std::uint64_t>(node.mesh.broken_faces_dropped);
     }
     return out.take();
@@ -112,8 +130,9 @@ std::optional<std::vector<NodeMesh>> decode_node_meshes(const std::string& bytes
         NodeMesh node;
         std::uint64_t broken = 0;
         if (!in.get_text(node.node_name) || !in.get_all(node.mesh.vertices) || !in.get_all(node.mesh.triangles) ||
-            !in.get_all(node.mesh.surfaces) || !in.get_texts(node.mesh.opacity_maps) || !in.get(broken) ||
-            !indices_in_range(node.mesh) || !surfaces_parallel(node.mesh))
+            !in.get_all(node.mesh.surfaces) || !in.get_texts(node.mesh.opacity_maps) ||
+            !in.get_colour_sources(node.mesh.colour_sources) || !in.get(broken) || !indices_in_range(node.mesh) ||
+            !surfaces_parallel(node.mesh))
             return std::nullopt;
         node.mesh.broken_faces_dropped = broken;
         nodes.push_back(std::move(node));

@@ -120,6 +120,7 @@ public:
         if (const json* camera = find_field(root, "camera")) scene.camera = read_camera(*camera);
         scene.light = read_light(required(root, "light"));
         scene.objects = read_objects(required(root, "objects"));
+        scene.notes = notes_;
         return scene;
     }
 
@@ -318,20 +319,32 @@ private:
         if (!file) fail(path, "required for a mesh, but missing");
         parse(*file, path, object.mesh_file);
         std::shared_ptr<const TriangleMesh>& mesh = meshes_[object.mesh_file];
-        if (!mesh) mesh = std::make_shared<const TriangleMesh>(load_triangle_mesh(object.mesh_file, file_, path));
+        std::vector<std::shared_ptr<const BaseColour>>& colours = colours_[object.mesh_file];
+        if (!mesh) {  // each file's notes once
+            mesh = std::make_shared<const TriangleMesh>(load_triangle_mesh(object.mesh_file, file_, path));
+            colours = material_colours(*mesh, object.mesh_file, file_, notes_);
+        }
         object.mesh = mesh;
         object.material_alpha = opacity_alpha_tests(*mesh, object.mesh_file, file_, path);
+        object.material_colour = colours;
     }
 
     const std::string& file_;
     std::map<std::string, std::shared_ptr<const TriangleMesh>> meshes_;
+    std::map<std::string, std::vector<std::shared_ptr<const BaseColour>>> colours_;
+    std::vector<Note> notes_;  // what loading the meshes degraded
 };
 
-// The scene, what the glTF file lacks said on stderr.
+// The scene, what loading it degraded said on stderr.
+Scene told(Scene scene, const std::string& file) {
+    for (const Note& note : scene.notes) std::clog << file << ": " << describe(note) << "\n";
+    return scene;
+}
+
+// The scene, what the glTF file lacks and what loading it degraded said on stderr.
 Scene told(GltfScene gltf, const std::string& gltf_file) {
     for (const std::string& assumed : gltf.defaulted) std::clog << gltf_file << ": " << assumed << "\n";
-    for (const Note& note : gltf.scene.notes) std::clog << gltf_file << ": " << describe(note) << "\n";
-    return std::move(gltf.scene);
+    return told(std::move(gltf.scene), gltf_file);
 }
 
 bool references_gltf(const json& root) { return root.is_object() && root.contains("gltf"); }
@@ -367,7 +380,7 @@ Scene load_scene(const std::string& path, const SceneChoice& choice) {
     // A scene JSON or a lone mesh holds one of each; a JSON referencing a glTF scene has chosen.
     check_choice(path, "", "camera", choice.camera, 1, "the file");
     check_choice(path, "", "light", choice.light, 1, "the file");
-    if (kind == SceneFileKind::mesh) return scene_around_mesh(path);
+    if (kind == SceneFileKind::mesh) return told(scene_around_mesh(path), path);
     return parse_scene(file_bytes(path), path);
 }
 
@@ -381,7 +394,7 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
     validate_scene(scene);
     scene.light.direction = normalize_safely(scene.light.direction);
     scene.camera.up = normalize_safely(scene.camera.up);
-    return scene;
+    return told(std::move(scene), file);
 }
 
 std::optional<GltfReference> gltf_reference_of(const std::string& path, const SceneChoice& choice) {

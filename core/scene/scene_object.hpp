@@ -7,6 +7,7 @@
 
 #include "geometry/aabb.hpp"
 #include "scene/alpha_test.hpp"
+#include "scene/base_colour.hpp"
 #include "scene/triangle_mesh.hpp"
 
 namespace shadowlab {
@@ -29,6 +30,9 @@ struct SceneObject {
     // Per material of its mesh file (TriangleSurface::material): an alpha-tested material's test, null
     // for an opaque one; empty when every material is opaque.
     std::vector<std::shared_ptr<const AlphaTest>> material_alpha;
+    // Per material of its mesh file: its base colour, which the Camera view shows in place of the
+    // object's palette colour; null for a material without one; empty when no material has one.
+    std::vector<std::shared_ptr<const BaseColour>> material_colour;
     bool casts = true;
     bool receives = true;
 

@@ -100,6 +100,20 @@ TriangleAlpha alpha_of(const SceneObject& object, std::size_t t) {
     return tested ? TriangleAlpha{.test = object.material_alpha[surface.material], .uv = surface.uv} : TriangleAlpha{};
 }
 
+// The base colour of a mesh's triangle t, null for none; its texture coordinates where the file gave them.
+TriangleColour colour_of(const SceneObject& object, std::size_t t) {
+    if (!object.mesh || object.mesh->surfaces.empty()) return {};
+    const TriangleSurface& surface = object.mesh->surfaces[t];
+    const bool coloured = surface.material >= 0 && surface.material < int(object.material_colour.size());
+    return coloured ? TriangleColour{.colour = object.material_colour[surface.material], .uv = surface.uv}
+                    : TriangleColour{};
+}
+
+bool has_colour(const SceneObject& object) {
+    return std::any_of(object.material_colour.begin(), object.material_colour.end(),
+                       [](const std::shared_ptr<const BaseColour>& colour) { return colour != nullptr; });
+}
+
 bool has_alpha_test(const SceneObject& object) {
     return std::any_of(object.material_alpha.begin(), object.material_alpha.end(),
                        [](const std::shared_ptr<const AlphaTest>& test) { return test != nullptr; });
@@ -119,6 +133,7 @@ void append(WorldTriangles& out, const TriangleMesh& mesh, const glm::dmat4& mod
 WorldTriangles tessellate(const Scene& scene, int segments) {
     WorldTriangles out;
     const bool alpha_tested = std::any_of(scene.objects.begin(), scene.objects.end(), has_alpha_test);
+    const bool coloured = std::any_of(scene.objects.begin(), scene.objects.end(), has_colour);
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
         const SceneObject& object = scene.objects[i];
         const std::size_t first = out.triangles.size();
@@ -128,6 +143,8 @@ WorldTriangles tessellate(const Scene& scene, int segments) {
             append(out, *object.mesh, object.model_matrix(), i);
         if (alpha_tested)
             for (std::size_t t = 0; t < out.triangles.size() - first; ++t) out.alpha.push_back(alpha_of(object, t));
+        if (coloured)
+            for (std::size_t t = 0; t < out.triangles.size() - first; ++t) out.colour.push_back(colour_of(object, t));
     }
     return out;
 }

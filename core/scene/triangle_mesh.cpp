@@ -137,6 +137,36 @@ std::vector<std::shared_ptr<const AlphaTest>> opacity_alpha_tests(const Triangle
     return tests;
 }
 
+std::vector<std::shared_ptr<const BaseColour>> material_colours(const TriangleMesh& mesh, const std::string& file,
+                                                                const std::string& scene_file,
+                                                                std::vector<Note>& notes) {
+    const std::filesystem::path path = resolved_mesh_path(file, scene_file);
+    std::vector<std::shared_ptr<const BaseColour>> colours;
+    for (const MaterialColourSource& source : mesh.colour_sources) {
+        if (!source.named) {
+            colours.push_back(nullptr);
+            continue;
+        }
+        BaseColour colour{.factor = source.diffuse, .texture = nullptr};
+        if (!source.texture.empty()) {
+            std::string named = source.texture;  // an MTL written on Windows separates folders by '\\'
+            std::replace(named.begin(), named.end(), '\\', '/');
+            const std::filesystem::path texture = (path.parent_path() / named).lexically_normal();
+            const std::string map_kd = path.filename().string() + ": map_Kd " + named;  // as messages name it
+            try {
+                colour.texture = std::make_shared<const ColourTexture>(
+                    decode_colour_texture(file_bytes(texture.string()), texture.string()));
+            } catch (const SceneError&) {
+                notes.push_back({NoteKind::base_colour_texture_missing, map_kd + " not found, its Kd shown"});
+            } catch (const std::invalid_argument& bad) {
+                notes.push_back({NoteKind::base_colour_texture_missing, map_kd + ": " + bad.what() + ", its Kd shown"});
+            }
+        }
+        colours.push_back(std::make_shared<const BaseColour>(std::move(colour)));
+    }
+    return colours;
+}
+
 std::string broken_faces_note(const std::string& file, std::size_t broken_faces) {
     if (broken_faces == 0) return "";
     const std::string faces = broken_faces == 1
@@ -161,6 +191,7 @@ TriangleMesh load_triangle_mesh(const std::string& file, const std::string& scen
             mesh.surfaces.resize(mesh.triangles.size());
         mesh.broken_faces_dropped += node.mesh.broken_faces_dropped;
         mesh.opacity_maps = node.mesh.opacity_maps;  // the file's, the same in every node
+        mesh.colour_sources = node.mesh.colour_sources;
     }
     if (mesh.triangles.empty()) problem.refuse_empty(0);
     problem.check_placed_and_drop_degenerate(mesh);

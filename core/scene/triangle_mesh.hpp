@@ -8,7 +8,9 @@
 #include <glm/glm.hpp>
 
 #include "geometry/aabb.hpp"
+#include "notes/note.hpp"
 #include "scene/alpha_test.hpp"
+#include "scene/base_colour.hpp"
 
 namespace shadowlab {
 
@@ -17,6 +19,16 @@ namespace shadowlab {
 struct TriangleSurface {
     int material = -1;  // the file's material index; -1 for none
     std::array<glm::dvec2, 3> uv{};
+};
+
+// A material's colour as the file gives it (OBJ's Kd and map_Kd, the texture relative to the file's
+// folder): what SceneObject::material_colour is made of (material_colours). Only a material the file
+// names has one: Assimp's own (its "DefaultMaterial", an unnamed one for a format without materials)
+// leaves the object its palette colour.
+struct MaterialColourSource {
+    bool named = false;
+    glm::dvec3 diffuse{1.0};  // linear, as glTF's baseColorFactor
+    std::string texture;      // empty for none
 };
 
 struct TriangleMesh {
@@ -28,6 +40,8 @@ struct TriangleMesh {
     // Per material of the file (TriangleSurface::material): its opacity texture as the file names it
     // (OBJ's map_d, relative to the file's folder), empty for none; empty when no material has one.
     std::vector<std::string> opacity_maps;
+    // Per material of the file: its colour; empty when no material of the file is named.
+    std::vector<MaterialColourSource> colour_sources;
     std::size_t degenerate_dropped = 0;    // the file's zero-area triangles, left out of `triangles`
     std::size_t broken_faces_dropped = 0;  // faces naming a vertex their mesh lacks (as Assimp read them)
 
@@ -57,6 +71,14 @@ std::filesystem::path resolved_mesh_path(const std::string& file, const std::str
 std::vector<std::shared_ptr<const AlphaTest>> opacity_alpha_tests(const TriangleMesh& mesh, const std::string& file,
                                                                   const std::string& scene_file,
                                                                   const std::string& json_path);
+
+// The base colours of the file's named materials (MaterialColourSource), for SceneObject::material_colour;
+// null for the others, none when no material is named. A texture that is missing or not a PNG is a note
+// in `notes` (base_colour_texture_missing: "quad.obj: map_Kd checker.png not found, its Kd shown"),
+// naming the mesh file and the texture as the MTL does, the material then showing its Kd alone.
+std::vector<std::shared_ptr<const BaseColour>> material_colours(const TriangleMesh& mesh, const std::string& file,
+                                                                const std::string& scene_file,
+                                                                std::vector<Note>& notes);
 
 // What was left out of a file's meshes, for the user: "FILE: 3 faces name a vertex their mesh lacks
 // (as Assimp reads them): left out" ("1 face names a vertex its mesh lacks"); empty when nothing

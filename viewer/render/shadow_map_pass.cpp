@@ -29,6 +29,7 @@
 #include "maps/map_lookup.hpp"
 #include "maps/projection_kind.hpp"
 #include "raster/paraboloid_edges.hpp"
+#include "render/base_colour_texture.hpp"
 #include "render/depth_texture.hpp"
 #include "render/glsl_source.hpp"
 #include "render/projection_glsl.hpp"
@@ -345,17 +346,13 @@ std::string glsl_constants() {
            real("shadowOverlayStrength", kOverlayStrength) + real("shadowTexelsLog2Range", kTexelsLog2Range);
 }
 
-// Stage 1 for an alpha-tested caster's actor: its texture coordinates passed on, its fragments tested
-// (glsl/caster_alpha.glsl) before anything else.
+// An alpha-tested actor's fragments tested (glsl/caster_alpha.glsl) before anything else; its texture
+// coordinates passed on (declared before the test's declarations, which read them).
 void replace_alpha_test(std::string& vertex, std::string& fragment) {
-    vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Dec",
-                                 "//VTK::PositionVC::Dec\nin vec2 shadowCasterUv;\nout vec2 shadowCasterUvVSOutput;\n",
-                                 false);
-    vtkShaderProgram::Substitute(vertex, "//VTK::PositionVC::Impl",
-                                 "//VTK::PositionVC::Impl\n  shadowCasterUvVSOutput = shadowCasterUv;\n", false);
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + glsl("caster_alpha"), false);
     vtkShaderProgram::Substitute(fragment, "//VTK::UniformFlow::Impl",
                                  "//VTK::UniformFlow::Impl\n  if (!shadowCasterKept()) discard;\n", false);
+    pass_texture_coordinates(vertex, fragment);
 }
 
 bool set_alpha_test_uniforms(ProgramUniforms& program, const AlphaTest& alpha, int texture_unit) {
@@ -500,8 +497,9 @@ const AlphaTest* ShadowMapPass::alpha_of(vtkProp* prop) const {
     return found != alpha_surfaces_.end() ? found->alpha.get() : nullptr;
 }
 
-void ShadowMapPass::SetAlphaTestedSurfaces(const std::vector<CasterActor>& surfaces) {
+void ShadowMapPass::SetMaterialSurfaces(const std::vector<CasterActor>& surfaces) {
     alpha_surfaces_ = surfaces;
+    base_colours_.set_surfaces(surfaces);
     Modified();
 }
 
@@ -535,6 +533,7 @@ void ShadowMapPass::Render(const vtkRenderState* s) {
     prepare_targets(window);
     if (paged()) prepare_page_textures(window);
     prepare_alpha_textures(window);
+    base_colours_.prepare(window);
     render_depth(s, window);
     if (lookup_.contact.on())
         render_camera_depth(s, window);
@@ -704,6 +703,7 @@ void ShadowMapPass::render_shaded(const vtkRenderState* s) {
     shade_->Render(s);
     NumberOfRenderedProps = shade_->GetNumberOfRenderedProps();
     PostRender(s);
+    base_colours_.unbind();
     if (contact_image_) contact_image_->deactivate();
     if (paged()) {
         page_slots_->Deactivate();
@@ -726,7 +726,6 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
         if (alpha_of(prop)) replace_alpha_test(vertex, fragment);
         return true;
     }
-    if (alpha_of(prop)) replace_alpha_test(vertex, fragment);
     pass_world_position(vertex);
     std::string declarations = projection + stage2_switches(lookup_, output_, overlay_).declarations() +
                                glsl("map_lookup", "depth_bias", "hash", "kernel_taps", "shadow_reader", "chebyshev",
@@ -744,6 +743,13 @@ bool ShadowMapPass::PreReplaceShaderValues(std::string& vertex, std::string&, st
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + declarations, false);
     declare_surface_shading(fragment);  // before the lookup's declarations, which use it
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", lookup, false);
+    // Declared last, so that their declarations come first: the texture coordinates, then what reads them.
+    const bool textured = base_colours_.textured(prop) != nullptr;
+    if (textured) BaseColourTextures::replace_colour(fragment);
+    if (alpha_of(prop))
+        replace_alpha_test(vertex, fragment);
+    else if (textured)
+        pass_texture_coordinates(vertex, fragment);
     return true;
 }
 
@@ -783,6 +789,7 @@ bool ShadowMapPass::SetShaderParameters(vtkShaderProgram* shader_program, vtkAbs
     }
     if (const AlphaTest* alpha = alpha_of(prop))
         if (!set_alpha_test_uniforms(program, *alpha, alpha_texture(alpha)->GetTextureUnit())) return false;
+    if (!base_colours_.bind(prop, shader_program)) return false;
     // Pages: the arrays the page selection fills are no uniforms; the others stay zero (linear maps).
     MapArrays maps = paged() ? MapArrays{} : map_arrays(setup_, resolution_);
     const bool unlit = output_ != Output::shaded;  // a grey level, white for lit: the lit mask or the visibility
@@ -806,6 +813,7 @@ void ShadowMapPass::ReleaseGraphicsResources(vtkWindow* w) {
         for (const CasterActor& caster : actors) caster.actor->ReleaseGraphicsResources(w);
     for (auto& [test, texture] : alpha_textures_) texture->ReleaseGraphicsResources(w);
     alpha_textures_.clear();
+    base_colours_.release(w);
     if (fbo_) fbo_->ReleaseGraphicsResources(w);
     if (depth_) depth_->ReleaseGraphicsResources(w);
     if (colour_) colour_->ReleaseGraphicsResources(w);

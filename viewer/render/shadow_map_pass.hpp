@@ -38,6 +38,7 @@
 #include "maps/shadow_map.hpp"
 #include "render/contact_depth_image.hpp"
 #include "render/map_overlay.hpp"
+#include "render/base_colour_texture.hpp"
 #include "render/stage_one_casters.hpp"
 #include "render/surface_shading.hpp"
 #include "scene/light.hpp"
@@ -83,9 +84,10 @@ public:
     // them split exactly as the CPU rasterizer splits them, instead of the props. Until they are given,
     // every map draws the props.
     void SetCasterTriangles(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object);
-    // Stage 2's alpha-tested surfaces (render/stage_one_casters.hpp: alpha_tested_surfaces), props of the
-    // renderer the shade pass draws: their fragments discarded where their test does not keep them.
-    void SetAlphaTestedSurfaces(const std::vector<CasterActor>& surfaces);
+    // Stage 2's surfaces with a material (render/stage_one_casters.hpp: material_surfaces), props of the
+    // renderer the shade pass draws: an alpha-tested one's fragments discarded where its test does not
+    // keep them, a textured one's coloured by its texture (render/base_colour_texture.hpp).
+    void SetMaterialSurfaces(const std::vector<CasterActor>& surfaces);
     void SetShadePass(vtkRenderPass* shade);
     void SetOutput(Output output);
     // What the shaded output paints over the shading (the lit mask never has an overlay); ramp: the
@@ -145,6 +147,7 @@ private:
     // the props. Each alpha test's texture, made once per context.
     std::vector<std::vector<CasterActor>> map_casters_;
     std::vector<CasterActor> alpha_surfaces_;
+    BaseColourTextures base_colours_;  // the textured ones' textures
     // Held by their tests (which a texture's test keeps alive: no other test can take its address).
     std::vector<std::pair<std::shared_ptr<const AlphaTest>, vtkSmartPointer<vtkTextureObject>>> alpha_textures_;
     vtkSmartPointer<vtkRenderPass> shade_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -14,6 +15,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkShaderProgram.h>
 #include <vtkTextureObject.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtk_glew.h>
@@ -51,6 +53,11 @@ vtkSmartPointer<vtkActor> opaque_actor(const WorldTriangles& triangles, const st
     return actor_of(data);
 }
 
+// A triangle's corners' texture coordinates: its alpha test's or its base colour's (the same TEXCOORD_0).
+const std::array<glm::dvec2, 3>& uv_of(const WorldTriangles& triangles, std::size_t i) {
+    return triangles.alpha_tested() && triangles.alpha[i].test ? triangles.alpha[i].uv : triangles.colour.at(i).uv;
+}
+
 // The chosen triangles, three vertices each with their corners' texture coordinates.
 vtkSmartPointer<vtkPolyData> textured_polydata(const WorldTriangles& triangles,
                                                const std::vector<std::size_t>& chosen) {
@@ -64,7 +71,8 @@ vtkSmartPointer<vtkPolyData> textured_polydata(const WorldTriangles& triangles,
         for (int k = 0; k < 3; ++k) {
             const glm::dvec3& v = triangles.vertices[triangles.triangles[i][k]];
             corners[k] = points->InsertNextPoint(v.x, v.y, v.z);
-            uv->InsertNextTuple2(triangles.alpha[i].uv[k].x, triangles.alpha[i].uv[k].y);
+            const glm::dvec2& corner = uv_of(triangles, i)[k];
+            uv->InsertNextTuple2(corner.x, corner.y);
         }
         cells->InsertNextCell(3, corners);
     }
@@ -98,23 +106,51 @@ std::vector<CasterActor> caster_actors(const WorldTriangles& triangles, const st
     for (const auto& [test, chosen] :
          by_alpha_test(triangles, [&](std::size_t i) { return casts_per_object.at(triangles.object[i]); })) {
         if (chosen.empty()) continue;
-        out.push_back({test ? actor_of(textured_polydata(triangles, chosen)) : opaque_actor(triangles, chosen), test});
+        out.push_back({.actor = test ? actor_of(textured_polydata(triangles, chosen)) : opaque_actor(triangles, chosen),
+                       .alpha = test});
     }
     return out;
 }
 
-std::vector<CasterActor> alpha_tested_surfaces(const WorldTriangles& triangles,
-                                               const std::vector<glm::dvec3>& colours_per_object) {
+bool has_material(const WorldTriangles& triangles, std::size_t triangle) {
+    return (triangles.alpha_tested() && triangles.alpha[triangle].test) ||
+           (triangles.coloured() && triangles.colour[triangle].colour);
+}
+
+std::vector<CasterActor> material_surfaces(const WorldTriangles& triangles, const std::vector<bool>& casts_per_object,
+                                           const std::vector<glm::dvec3>& colours_per_object) {
+    struct Group {
+        CasterActor surface;
+        std::vector<std::size_t> chosen;
+    };
+    std::vector<Group> groups;
+    for (std::size_t i = 0; i < triangles.triangles.size(); ++i) {
+        if (!has_material(triangles, i)) continue;
+        const std::shared_ptr<const AlphaTest> alpha = triangles.alpha_tested() ? triangles.alpha[i].test : nullptr;
+        const std::shared_ptr<const BaseColour> colour = triangles.coloured() ? triangles.colour[i].colour : nullptr;
+        const CasterActor key{.actor = nullptr,
+                              .alpha = alpha,
+                              .textured = colour && colour->texture ? colour : nullptr,
+                              .casts = casts_per_object.at(triangles.object[i])};
+        auto group = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
+            return g.surface.alpha == key.alpha && g.surface.textured == key.textured && g.surface.casts == key.casts;
+        });
+        if (group == groups.end()) group = groups.insert(groups.end(), {key, {}});
+        group->chosen.push_back(i);
+    }
     std::vector<CasterActor> out;
-    for (const auto& [test, chosen] : by_alpha_test(triangles, [](std::size_t) { return true; })) {
-        if (!test) continue;
-        vtkSmartPointer<vtkPolyData> data = textured_polydata(triangles, chosen);
+    for (Group& group : groups) {
+        vtkSmartPointer<vtkPolyData> data = textured_polydata(triangles, group.chosen);
         vtkNew<vtkUnsignedCharArray> colours;
         colours->SetName("colour");
         colours->SetNumberOfComponents(3);
-        for (std::size_t i : chosen) {
-            const glm::dvec3 c = 255.0 * colours_per_object.at(triangles.object[i]);
-            colours->InsertNextTuple3(c.r, c.g, c.b);
+        for (std::size_t i : group.chosen) {
+            const std::shared_ptr<const BaseColour>& colour =
+                triangles.coloured() ? triangles.colour[i].colour : nullptr;
+            const glm::dvec3 c = 255.0 * (group.surface.textured ? glm::dvec3(1.0)
+                                          : colour               ? shown_factor(*colour)
+                                                                 : colours_per_object.at(triangles.object[i]));
+            colours->InsertNextTuple3(std::round(c.r), std::round(c.g), std::round(c.b));
         }
         data->GetCellData()->SetScalars(colours);
         vtkSmartPointer<vtkActor> actor = actor_of(data);
@@ -123,9 +159,22 @@ std::vector<CasterActor> alpha_tested_surfaces(const WorldTriangles& triangles,
         mapper->SelectColorArray("colour");
         mapper->SetColorModeToDirectScalars();
         mapper->ScalarVisibilityOn();
-        out.push_back({actor, test});
+        group.surface.actor = actor;
+        out.push_back(group.surface);
     }
     return out;
+}
+
+void pass_texture_coordinates(std::string& vertex, std::string& fragment) {
+    vtkShaderProgram::Substitute(
+        vertex, "//VTK::PositionVC::Dec",
+        "//VTK::PositionVC::Dec\nin vec2 " + std::string(kUvAttribute) + ";\nout vec2 " + kUvAttribute + "VSOutput;\n",
+        false);
+    vtkShaderProgram::Substitute(
+        vertex, "//VTK::PositionVC::Impl",
+        "//VTK::PositionVC::Impl\n  " + std::string(kUvAttribute) + "VSOutput = " + kUvAttribute + ";\n", false);
+    vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec",
+                                 "//VTK::Light::Dec\nin vec2 " + std::string(kUvAttribute) + "VSOutput;\n", false);
 }
 
 vtkSmartPointer<vtkTextureObject> alpha_texture_object(const AlphaTest& test, vtkOpenGLRenderWindow* window) {

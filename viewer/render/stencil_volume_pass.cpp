@@ -94,12 +94,19 @@ void StencilVolumePass::SetOutput(Output output) {
     Modified();
 }
 
+void StencilVolumePass::SetTexturedSurfaces(const std::vector<CasterActor>& surfaces) {
+    base_colours_.set_surfaces(surfaces);
+    Modified();
+}
+
 void StencilVolumePass::Render(const vtkRenderState* s) {
+    auto* window = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+    base_colours_.prepare(window);
     PreRender(s);
     lit_ = 1.0f;
     lit_scene_->Render(s);  // 1: the scene, lit, writing depth
+    base_colours_.unbind();
     NumberOfRenderedProps = lit_scene_->GetNumberOfRenderedProps();
-    auto* window = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
     if (vtkShaderProgram* program = corners_.empty() ? nullptr : prepare(window)) {
         if (attach_stencil_buffer()) {
             vtkOpenGLState* gl = window->GetState();
@@ -202,26 +209,33 @@ void StencilVolumePass::shade_shadowed(const vtkRenderState* s, vtkOpenGLState* 
     gl->vtkglDepthFunc(GL_LEQUAL);
     lit_ = 0.0f;
     shadowed_scene_->Render(s);
+    base_colours_.unbind();
     lit_ = 1.0f;
 }
 
 bool StencilVolumePass::PreReplaceShaderValues(std::string& vertex, std::string&, std::string& fragment,
-                                               vtkAbstractMapper*, vtkProp*) {
+                                               vtkAbstractMapper*, vtkProp* prop) {
     pass_world_position(vertex);
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Dec", "//VTK::Light::Dec\nuniform float surfaceLit;\n",
                                  false);
     declare_surface_shading(fragment);
     vtkShaderProgram::Substitute(fragment, "//VTK::Light::Impl", std::string(glsl_source("stencil_shade")), false);
+    if (base_colours_.textured(prop)) {  // declared last, so that the texture coordinates come first
+        BaseColourTextures::replace_colour(fragment);
+        pass_texture_coordinates(vertex, fragment);
+    }
     return true;
 }
 
-bool StencilVolumePass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*,
+bool StencilVolumePass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop,
                                             vtkOpenGLVertexArrayObject*) {
     const bool lit = program->SetUniformf("surfaceLit", lit_);
-    return set_surface_shading_uniforms(program, frame_, output_ == Output::lit_mask) && lit;
+    const bool textured = base_colours_.bind(prop, program);
+    return set_surface_shading_uniforms(program, frame_, output_ == Output::lit_mask) && lit && textured;
 }
 
 void StencilVolumePass::ReleaseGraphicsResources(vtkWindow* w) {
+    base_colours_.release(w);
     lit_scene_->ReleaseGraphicsResources(w);
     shadowed_scene_->ReleaseGraphicsResources(w);
     overlay_->ReleaseGraphicsResources(w);

@@ -19,6 +19,7 @@
 #include <vtkOpenGLRenderPass.h>
 #include <vtkSmartPointer.h>
 
+#include "render/base_colour_texture.hpp"
 #include "render/surface_shading.hpp"
 #include "techniques/geometry_result.hpp"
 
@@ -47,6 +48,9 @@ public:
     // light: (direction it travels, 0) or (position, 1); eye: the camera's position.
     void SetLight(const glm::dvec4& light, const glm::dvec3& eye);
     void SetOutput(Output output);
+    // The surfaces with a material (render/stage_one_casters.hpp: material_surfaces): the textured ones
+    // coloured by their texture (render/base_colour_texture.hpp); the alpha-tested ones drawn whole.
+    void SetTexturedSurfaces(const std::vector<CasterActor>& surfaces);
 
     void Render(const vtkRenderState* s) override;
     void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -75,6 +79,7 @@ private:
     vtkSmartPointer<vtkOverlayPass> overlay_;        // step 4
     vtkSmartPointer<vtkOpenGLBufferObject> buffer_;
     vtkSmartPointer<vtkOpenGLVertexArrayObject> vao_;
+    BaseColourTextures base_colours_;
 };
 
 }  // namespace shadowlab

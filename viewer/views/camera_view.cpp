@@ -37,14 +37,17 @@ std::vector<glm::vec3> texels_ramp() {
 }
 
 void install_map_pass(vtkRenderer* renderer, const Inspection& in, const ViewOptions& options, vtkActor* casters,
-                      const std::vector<CasterActor>& alpha_surfaces, const Light& light) {
+                      const std::vector<CasterActor>& material_surfaces, const Light& light) {
     vtkNew<ShadowMapPass> pass;
     pass->SetSetup(relative_to(in.setup, in.scene.camera.position), in.resolution);
     pass->SetLookup(in.lookup, light, glm::dvec3(0.0));  // the eye
-    pass->SetCasters({casters});
+    std::vector<vtkProp*> props{casters};
+    for (const CasterActor& surface : material_surfaces)
+        if (surface.casts) props.push_back(surface.actor);
+    pass->SetCasters(props);
     // Maps that split their casters (a paraboloid's max_sagitta_texels) draw these, split as the CPU does.
     pass->SetCasterTriangles(relative_to(in.triangles, in.scene.camera.position), in.casters);
-    pass->SetAlphaTestedSurfaces(alpha_surfaces);
+    pass->SetMaterialSurfaces(material_surfaces);
     pass->SetShadePass(vtkNew<vtkRenderStepsPass>());
     pass->SetOutput(options.lit_mask ? ShadowMapPass::Output::lit_mask : ShadowMapPass::Output::shaded);
     pass->SetOverlay(options.overlay, texels_ramp());
@@ -114,8 +117,10 @@ void describe_overlay(vtkRenderer* renderer, const Inspection& in, MapOverlay ov
 }
 
 void install_stencil_pass(vtkRenderer* renderer, const GeometryResult& technique, const ViewOptions& options,
-                          const glm::dvec3& origin, const Light& light) {
+                          const std::vector<CasterActor>& material_surfaces, const glm::dvec3& origin,
+                          const Light& light) {
     vtkNew<StencilVolumePass> pass;
+    pass->SetTexturedSurfaces(material_surfaces);
     std::vector<HomogeneousPolygon> local;
     for (const HomogeneousPolygon& p : technique.stencil) local.push_back(translated(p, -origin));
     pass->SetPolygons(local, technique.rule);
@@ -124,12 +129,13 @@ void install_stencil_pass(vtkRenderer* renderer, const GeometryResult& technique
     renderer->SetPass(pass);
 }
 
-// The triangles without the alpha-tested ones, which alpha_tested_surfaces draws.
-WorldTriangles opaque_triangles(const WorldTriangles& triangles) {
-    if (!triangles.alpha_tested()) return triangles;
-    WorldTriangles out{.vertices = triangles.vertices, .triangles = {}, .object = {}, .alpha = {}};
+// The triangles in their objects' palette colours: without those with a material, which
+// material_surfaces draws.
+WorldTriangles palette_triangles(const WorldTriangles& triangles) {
+    if (!triangles.alpha_tested() && !triangles.coloured()) return triangles;
+    WorldTriangles out{.vertices = triangles.vertices, .triangles = {}, .object = {}, .alpha = {}, .colour = {}};
     for (std::size_t i = 0; i < triangles.triangles.size(); ++i)
-        if (!triangles.alpha[i].test) {
+        if (!has_material(triangles, i)) {
             out.triangles.push_back(triangles.triangles[i]);
             out.object.push_back(triangles.object[i]);
         }
@@ -150,14 +156,15 @@ ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const 
     const std::vector<glm::dvec3> colours = object_colours(in.scene);
     std::vector<bool> not_casting(in.casters.size());
     for (size_t i = 0; i < in.casters.size(); ++i) not_casting[i] = !in.casters[i];
-    const WorldTriangles opaque = opaque_triangles(in.triangles);
-    auto casters = actor_for(triangles_polydata(opaque, in.casters, colours, local_from_world), glm::dvec3(1.0));
-    auto others = actor_for(triangles_polydata(opaque, not_casting, colours, local_from_world), glm::dvec3(1.0));
-    // A map method's pass tests the alpha-tested ones' fragments (drawn whole under a technique's).
-    const std::vector<CasterActor> alpha_surfaces =
-        alpha_tested_surfaces(relative_to(in.triangles, in.scene.camera.position), colours);
+    const WorldTriangles palette = palette_triangles(in.triangles);
+    auto casters = actor_for(triangles_polydata(palette, in.casters, colours, local_from_world), glm::dvec3(1.0));
+    auto others = actor_for(triangles_polydata(palette, not_casting, colours, local_from_world), glm::dvec3(1.0));
+    // In their materials' colours; a map method's pass tests the alpha-tested ones' fragments (drawn
+    // whole under a technique's).
+    const std::vector<CasterActor> material_surfaces =
+        shadowlab::material_surfaces(relative_to(in.triangles, in.scene.camera.position), in.casters, colours);
     std::vector<vtkActor*> surfaces{casters.Get(), others.Get()};
-    for (const CasterActor& surface : alpha_surfaces) surfaces.push_back(surface.actor);
+    for (const CasterActor& surface : material_surfaces) surfaces.push_back(surface.actor);
     for (vtkActor* actor : surfaces) {  // the passes shade them (render/surface_shading.hpp)
         actor->GetProperty()->SetAmbient(0.35);
         actor->GetProperty()->SetDiffuse(0.75);
@@ -167,10 +174,10 @@ ViewReport build_camera_view(vtkRenderer* renderer, const Inspection& in, const 
     place_scene_camera(renderer, camera);
     renderer->SetBackground(0.62, 0.74, 0.86);
     if (in.has_map()) {
-        install_map_pass(renderer, in, options, casters, alpha_surfaces, light);
+        install_map_pass(renderer, in, options, casters, material_surfaces, light);
         if (!options.lit_mask) describe_overlay(renderer, in, options.overlay);
     } else
-        install_stencil_pass(renderer, *in.geometry, options, origin, light);
+        install_stencil_pass(renderer, *in.geometry, options, material_surfaces, origin, light);
     if (options.lit_mask) renderer->SetBackground(1.0, 0.0, 0.0);  // nothing visible: red, neither lit nor shadowed
     return {};
 }
