@@ -174,8 +174,31 @@ Flatland flatland(const ShadowInputs& in, const ShadowSetup& setup, int texture_
     }
     f.stride = readable_stride(families, f);
     for (const TexelFamily& family : families) trace_family(f, setup, family);
+    f.view_axis = view_axis_span(in);
     assert_invariant(f.stride >= 1);
     return f;
+}
+
+int view_axis_crossings(const Flatland& f, double from, double to) {
+    int count = 0;
+    for (const TexelLine& line : f.texel_lines)
+        for (size_t i = 0; i + 1 < line.points.size(); ++i) {
+            const glm::dvec2 p = f.plane.coordinates(line.points[i]), q = f.plane.coordinates(line.points[i + 1]);
+            if ((p.y < 0.0) == (q.y < 0.0)) continue;
+            const double s = p.x + (q.x - p.x) * (p.y / (p.y - q.y));  // where the segment meets t = 0
+            count += s >= from && s < to;
+        }
+    return count;
+}
+
+std::optional<AxisLineDensity> axis_line_density(const Flatland& f) {
+    if (!f.view_axis) return std::nullopt;
+    const double fifth = (f.view_axis->far - f.view_axis->near) / 5.0;
+    AxisLineDensity d{.near = {f.view_axis->near, f.view_axis->near + fifth},
+                      .far = {f.view_axis->far - fifth, f.view_axis->far}};
+    d.near_lines = view_axis_crossings(f, d.near.near, d.near.far) / fifth;
+    d.far_lines = view_axis_crossings(f, d.far.near, d.far.far) / fifth;
+    return d;
 }
 
 std::vector<std::pair<glm::dvec3, glm::dvec3>> scene_section(const WorldTriangles& triangles,

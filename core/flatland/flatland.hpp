@@ -10,6 +10,7 @@
 
 #include "flatland/flatland_plane.hpp"
 #include "flatland/level_curves.hpp"
+#include "flatland/texel_density.hpp"
 #include "maps/shadow_map.hpp"
 #include "methods/shadow_inputs.hpp"
 #include "scene/tessellation.hpp"
@@ -42,6 +43,7 @@ struct Flatland {
     int stride = 1;                         // k: every k-th boundary is traced, a power of two
     std::vector<TexelLine> texel_lines;     // within the frame, each where its map serves (the selection) and
                                             // holds the point in its unit cube
+    std::optional<DepthSpan> view_axis;     // where the view axis runs through the scene (view_axis_span)
 };
 
 // At most this many texel boundaries (of u and of v together) across the frame's longer side where
@@ -50,6 +52,17 @@ constexpr double kMostLinesAcross = 128.0;
 
 // The flatland of a setup drawn into a texture of `texture_resolution` texels per side.
 Flatland flatland(const ShadowInputs& inputs, const ShadowSetup& setup, int texture_resolution);
+
+// How many of the traced texel boundaries cross the view axis (t = 0) at view depths in [from, to).
+int view_axis_crossings(const Flatland& flatland, double from, double to);
+
+// Boundaries crossed per unit of view depth over the first and the last fifth of the view axis's
+// span: how far apart the map's texels fall along the view near the eye and far from it.
+struct AxisLineDensity {
+    DepthSpan near, far;  // the two stretches of the view axis
+    double near_lines = 0.0, far_lines = 0.0;  // boundaries per unit of view depth in each
+};
+std::optional<AxisLineDensity> axis_line_density(const Flatland& flatland);
 
 // The scene's surfaces cut by the plane: one segment per triangle the plane crosses (the ground's
 // line, each object's outline), for the picture's bearings.
