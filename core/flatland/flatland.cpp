@@ -115,9 +115,12 @@ void trace_family(Flatland& f, const ShadowSetup& setup, const TexelFamily& fami
     const ScalarField field = [&](const glm::dvec3& p) { return family.field(setup, p); };
     const int first = static_cast<int>(std::ceil(std::max(0.0, family.least) / f.stride)) * f.stride;
     const int last = static_cast<int>(std::floor(std::min<double>(family.texels, family.most)));
-    for (int index = first; index <= last; index += f.stride)
-        for (Polyline& line : level_curves(family.samples, field, index))
-            f.texel_lines.push_back({family.map, family.axis, index, std::move(line)});
+    std::vector<double> levels;
+    for (int index = first; index <= last; index += f.stride) levels.push_back(index);
+    std::vector<std::vector<Polyline>> curves = level_curves(family.samples, field, levels);
+    for (size_t k = 0; k < levels.size(); ++k)
+        for (Polyline& line : curves[k])
+            f.texel_lines.push_back({family.map, family.axis, static_cast<int>(levels[k]), std::move(line)});
 }
 
 Polyline closed(std::vector<glm::dvec3> polygon) {

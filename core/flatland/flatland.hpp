@@ -34,16 +34,16 @@ struct MapSection {
 
 struct Flatland {
     FlatlandPlane plane;
-    std::vector<Note> fallbacks;            // light_along_view when the plane fell back
+    std::vector<Note> fallbacks;                // light_along_view when the plane fell back
     glm::dvec2 frame_min{0.0}, frame_max{0.0};  // the (s, t) rectangle shown: B's section and the eye, with a margin
-    std::vector<glm::dvec3> frustum;        // the camera frustum's section, counter-clockwise about the normal
-    std::vector<glm::dvec3> body;           // B's section (empty: the plane misses B)
-    std::vector<MapSection> map_volumes;    // one per map the frame shows
-    int texels = 0;                         // R: texels per side of the widest tile
-    int stride = 1;                         // k: every k-th boundary is traced, a power of two
-    std::vector<TexelLine> texel_lines;     // within the frame, each where its map serves (the selection) and
-                                            // holds the point in its unit cube
-    std::optional<DepthSpan> view_axis;     // where the view axis runs through the scene (view_axis_span)
+    std::vector<glm::dvec3> frustum;            // the camera frustum's section, counter-clockwise about the normal
+    std::vector<glm::dvec3> body;               // B's section (empty: the plane misses B)
+    std::vector<MapSection> map_volumes;        // one per map the frame shows
+    int texels = 0;                             // R: texels per side of the widest tile
+    int stride = 1;                             // k: every k-th boundary is traced, a power of two
+    std::vector<TexelLine> texel_lines;         // within the frame, each where its map serves (the selection) and
+                                                // holds the point in its unit cube
+    std::optional<DepthSpan> view_axis;         // where the view axis runs through the scene (view_axis_span)
 };
 
 // At most this many texel boundaries (of u and of v together) across the frame's longer side where
@@ -59,13 +59,14 @@ int view_axis_crossings(const Flatland& flatland, double from, double to);
 // Boundaries crossed per unit of view depth over the first and the last fifth of the view axis's
 // span: how far apart the map's texels fall along the view near the eye and far from it.
 struct AxisLineDensity {
-    DepthSpan near, far;  // the two stretches of the view axis
+    DepthSpan near, far;                       // the two stretches of the view axis
     double near_lines = 0.0, far_lines = 0.0;  // boundaries per unit of view depth in each
 };
 std::optional<AxisLineDensity> axis_line_density(const Flatland& flatland);
 
 // The scene's surfaces cut by the plane: one segment per triangle the plane crosses (the ground's
 // line, each object's outline), for the picture's bearings.
-std::vector<std::pair<glm::dvec3, glm::dvec3>> scene_section(const WorldTriangles& triangles, const FlatlandPlane& plane);
+std::vector<std::pair<glm::dvec3, glm::dvec3>> scene_section(const WorldTriangles& triangles,
+                                                             const FlatlandPlane& plane);
 
 }  // namespace shadowlab

@@ -33,9 +33,9 @@ FlatlandChoice flatland_plane(const Camera& camera, const Light& light) {
     glm::dvec3 across = -(l - glm::dot(l, plane.along) * plane.along);
     const double sin_view_light = glm::length(across);
     if (!(sin_view_light >= kLeastSinViewLight)) {
-        choice.fallback = Note{NoteKind::light_along_view,
-                               "sin(V, L) = " + std::to_string(sin_view_light) +
-                                   ": the flatland plane is the one of V and the camera's up"};
+        choice.fallback =
+            Note{NoteKind::light_along_view, "sin(V, L) = " + std::to_string(sin_view_light) +
+                                                 ": the flatland plane is the one of V and the camera's up"};
         across = camera.up - glm::dot(camera.up, plane.along) * plane.along;
     }
     plane.across = glm::normalize(across);

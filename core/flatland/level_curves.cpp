@@ -1,5 +1,6 @@
 #include "flatland/level_curves.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -10,7 +11,7 @@
 namespace shadowlab {
 namespace {
 
-constexpr int kBisections = 40;  // a crossing to 2^-40 of its cell edge
+constexpr int kBisections = 32;  // a crossing to 2^-32 of its cell edge
 
 // A cell edge by its lower corner and direction: horizontal (to (i + 1, j)) or vertical (to (i, j + 1)).
 struct GridEdge {
@@ -30,23 +31,10 @@ class CurveTracer {
 public:
     CurveTracer(const GridSamples& s, const ScalarField& field, double level) : s_(s), field_(field), level_(level) {}
 
-    std::vector<Polyline> trace() {
-        for (int j = 0; j < s_.grid.cells.y; ++j)
-            for (int i = 0; i < s_.grid.cells.x; ++i) cross_cell(i, j);
-        return chained();
-    }
-
-private:
-    bool above(double value) const { return value >= level_; }
-
-    // The cell's corners (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1) and its edges bottom, right,
-    // top, left: edge k joins corners k and k + 1.
-    void cross_cell(int i, int j) {
-        const std::array<double, 4> v{s_.at(i, j), s_.at(i + 1, j), s_.at(i + 1, j + 1), s_.at(i, j + 1)};
-        for (double x : v)
-            if (std::isnan(x)) return;
-        const std::array<GridEdge, 4> edges{
-            {{i, j, false}, {i + 1, j, true}, {i, j + 1, false}, {i, j, true}}};
+    // The cell's corners (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1), their values v (none NaN),
+    // and its edges bottom, right, top, left: edge k joins corners k and k + 1.
+    void cross_cell(int i, int j, const std::array<double, 4>& v) {
+        const std::array<GridEdge, 4> edges{{{i, j, false}, {i + 1, j, true}, {i, j + 1, false}, {i, j, true}}};
         std::array<int, 4> crossed{};
         int count = 0;
         for (int k = 0; k < 4; ++k)
@@ -88,6 +76,7 @@ private:
         return key;
     }
 
+    // The segments chained into polylines.
     std::vector<Polyline> chained() {
         std::vector<bool> used(segments_.size(), false);
         std::vector<Polyline> curves;
@@ -109,6 +98,9 @@ private:
             if (!used[k]) walk(segments_[k].a, static_cast<int>(k));
         return curves;
     }
+
+private:
+    bool above(double value) const { return value >= level_; }
 
     const GridSamples& s_;
     const ScalarField& field_;
@@ -134,7 +126,28 @@ GridSamples sample_field(const PlaneGrid& grid, const ScalarField& field) {
 }
 
 std::vector<Polyline> level_curves(const GridSamples& samples, const ScalarField& field, double level) {
-    return CurveTracer(samples, field, level).trace();
+    return level_curves(samples, field, std::vector<double>{level}).front();
+}
+
+std::vector<std::vector<Polyline>> level_curves(const GridSamples& samples, const ScalarField& field,
+                                                const std::vector<double>& levels) {
+    assert_invariant(std::is_sorted(levels.begin(), levels.end()));
+    std::vector<CurveTracer> tracers;
+    for (double level : levels) tracers.emplace_back(samples, field, level);
+    for (int j = 0; j < samples.grid.cells.y; ++j)
+        for (int i = 0; i < samples.grid.cells.x; ++i) {
+            const std::array<double, 4> v{samples.at(i, j), samples.at(i + 1, j), samples.at(i + 1, j + 1),
+                                          samples.at(i, j + 1)};
+            if (std::isnan(v[0] + v[1] + v[2] + v[3])) continue;
+            const auto [lo, hi] = std::minmax({v[0], v[1], v[2], v[3]});
+            // A level crosses the cell when some corner lies below it and some at or above: lo < level <= hi.
+            for (auto level = std::upper_bound(levels.begin(), levels.end(), lo); level != levels.end() && *level <= hi;
+                 ++level)
+                tracers[level - levels.begin()].cross_cell(i, j, v);
+        }
+    std::vector<std::vector<Polyline>> curves;
+    for (CurveTracer& tracer : tracers) curves.push_back(tracer.chained());
+    return curves;
 }
 
 }  // namespace shadowlab

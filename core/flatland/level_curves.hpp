@@ -38,5 +38,9 @@ GridSamples sample_field(const PlaneGrid& grid, const ScalarField& field);
 // The curves where `field` equals `level`, from its samples: each a polyline, open where it leaves
 // the grid or the field's domain, closed (first point repeated last) around a loop.
 std::vector<Polyline> level_curves(const GridSamples& samples, const ScalarField& field, double level);
+// The same for several levels, increasing, in one pass over the cells: each cell visits only the
+// levels between its corners' least and greatest values. One list of curves per level.
+std::vector<std::vector<Polyline>> level_curves(const GridSamples& samples, const ScalarField& field,
+                                                const std::vector<double>& levels);
 
 }  // namespace shadowlab

@@ -32,9 +32,9 @@ std::vector<Edge> edges_of(const ConvexPolyhedron& solid) {
 std::vector<Edge> edges_of(const Frustum& f) {
     std::vector<Edge> edges;
     for (int i = 0; i < 4; ++i) {
-        edges.emplace_back(f.corners[i], f.corners[(i + 1) % 4]);              // the near face's loop
-        edges.emplace_back(f.corners[4 + i], f.corners[4 + (i + 1) % 4]);      // the far face's
-        edges.emplace_back(f.corners[i], f.corners[4 + i]);                    // a side edge
+        edges.emplace_back(f.corners[i], f.corners[(i + 1) % 4]);          // the near face's loop
+        edges.emplace_back(f.corners[4 + i], f.corners[4 + (i + 1) % 4]);  // the far face's
+        edges.emplace_back(f.corners[i], f.corners[4 + i]);                // a side edge
     }
     return edges;
 }
@@ -55,8 +55,11 @@ std::vector<glm::dvec3> plane_section(const std::vector<Edge>& edges, const Plan
     glm::dvec3 centre(0.0);
     for (const glm::dvec3& c : corners) centre += c / static_cast<double>(corners.size());
     const auto [x, y] = plane_axes(plane.normal);
-    const auto angle = [&](const glm::dvec3& p) { return std::atan2(glm::dot(p - centre, y), glm::dot(p - centre, x)); };
-    std::sort(corners.begin(), corners.end(), [&](const glm::dvec3& p, const glm::dvec3& q) { return angle(p) < angle(q); });
+    const auto angle = [&](const glm::dvec3& p) {
+        return std::atan2(glm::dot(p - centre, y), glm::dot(p - centre, x));
+    };
+    std::sort(corners.begin(), corners.end(),
+              [&](const glm::dvec3& p, const glm::dvec3& q) { return angle(p) < angle(q); });
     return corners;
 }
 

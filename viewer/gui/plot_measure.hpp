@@ -25,7 +25,7 @@ struct PlotRequest {
     Scene scene;
     std::string method;                           // a map method of the registry
     std::map<std::string, std::string> settings;  // the window's, as text
-    int resolution = 1024;  // shimmer, bias and density: the map's; error: 256² to 2048²
+    int resolution = 1024;                        // shimmer, bias and density: the map's; error: 256² to 2048²
 };
 
 struct Plot {

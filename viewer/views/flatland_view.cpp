@@ -63,9 +63,10 @@ void draw_texel_lines(SpaceCanvas& canvas, const Flatland& f, const ShadowSetup&
 
 void draw_sections(SpaceCanvas& canvas, const Flatland& f, const Placement& placement) {
     std::vector<Polyline> volumes;
-    for (const MapSection& section : f.map_volumes) volumes.insert(volumes.end(), section.outline.begin(), section.outline.end());
-    canvas.draw(segments_polydata(segments_of(volumes), placement), {.colour = role_style(Role::map).colour, .width = 2.0},
-                "map volume (a warp's frustum)");
+    for (const MapSection& section : f.map_volumes)
+        volumes.insert(volumes.end(), section.outline.begin(), section.outline.end());
+    canvas.draw(segments_polydata(segments_of(volumes), placement),
+                {.colour = role_style(Role::map).colour, .width = 2.0}, "map volume (a warp's frustum)");
     const auto closed = [](std::vector<glm::dvec3> polygon) {
         if (!polygon.empty()) polygon.push_back(polygon.front());
         return std::vector<Polyline>{polygon};
@@ -80,8 +81,7 @@ void draw_sections(SpaceCanvas& canvas, const Flatland& f, const Placement& plac
 void draw_eye_and_light(SpaceCanvas& canvas, const Flatland& f, const Light& light, const Placement& placement) {
     const glm::dvec3 eye = f.plane.eye, view_colour = role_style(Role::view).colour;
     const double length = 0.15 * (f.frame_max.x - f.frame_min.x);
-    canvas.draw(geometry_polydata(Arrow{eye, eye + length * f.plane.along}, placement), {.colour = view_colour},
-                "");
+    canvas.draw(geometry_polydata(Arrow{eye, eye + length * f.plane.along}, placement), {.colour = view_colour}, "");
     canvas.label(glm::dvec3(0.0), "eye", view_colour);
     canvas.label(glm::dvec3(length, 0.0, 0.0), "V", view_colour);
     const glm::dvec3 l = light_direction_at(light, eye), light_colour = role_style(Role::light).colour;
