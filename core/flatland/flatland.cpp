@@ -123,16 +123,11 @@ void trace_family(Flatland& f, const ShadowSetup& setup, const TexelFamily& fami
             f.texel_lines.push_back({family.map, family.axis, static_cast<int>(levels[k]), std::move(line)});
 }
 
-Polyline closed(std::vector<glm::dvec3> polygon) {
-    if (!polygon.empty()) polygon.push_back(polygon.front());
-    return polygon;
-}
-
 // A map's volume cut by the plane: its frustum's section for a projective kind, else the level
 // curve where the least of u, 1 − u, v, 1 − v, d, 1 − d crosses 0.
 MapSection map_section(const Flatland& f, const ShadowMap& map, int index, const PlaneGrid& grid) {
     if (projection_kind(map).projective())
-        return {index, {closed(plane_section(edges_of(map_volume(map)), f.plane.plane()))}};
+        return {index, 0, {closed_outline(plane_section(edges_of(map_volume(map)), f.plane.plane()))}};
     const ScalarField inside = [&](const glm::dvec3& p) {
         const glm::dvec4 h = map_homogeneous(map, p);
         if (!(h.w > 0.0)) return kNaN;
@@ -140,7 +135,7 @@ MapSection map_section(const Flatland& f, const ShadowMap& map, int index, const
         const glm::dvec3 low = glm::min(uvz, 1.0 - uvz);
         return std::min({low.x, low.y, low.z});
     };
-    return {index, level_curves(sample_field(grid, inside), inside, 0.0)};
+    return {index, 0, level_curves(sample_field(grid, inside), inside, 0.0)};
 }
 
 }  // namespace
@@ -174,12 +169,18 @@ Flatland flatland(const ShadowInputs& in, const ShadowSetup& setup, int texture_
         f.texels = std::max(f.texels, texels);
         for (int axis : {0, 1}) families.push_back(texel_family(chosen, uvz, m, axis, texels));
         f.map_volumes.push_back(map_section(f, setup.maps[m], m, grid));
+        f.map_volumes.back().texels = texels;
     }
     f.stride = readable_stride(families, f);
     for (const TexelFamily& family : families) trace_family(f, setup, family);
     f.view_axis = view_axis_span(in);
     assert_invariant(f.stride >= 1);
     return f;
+}
+
+Polyline closed_outline(std::vector<glm::dvec3> polygon) {
+    if (!polygon.empty()) polygon.push_back(polygon.front());
+    return polygon;
 }
 
 int view_axis_crossings(const Flatland& f, double from, double to) {

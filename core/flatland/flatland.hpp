@@ -29,8 +29,12 @@ struct TexelLine {
 // maps/map_lookup.hpp map_volume), else its boundary's level curves (where one of u, v, d leaves [0, 1]).
 struct MapSection {
     int map = 0;
+    int texels = 0;                 // R: texels per side of its tile
     std::vector<Polyline> outline;  // closed polylines (first point repeated last) or open pieces
 };
+
+// A polygon as a closed polyline: its first corner repeated last (none for an empty polygon).
+Polyline closed_outline(std::vector<glm::dvec3> polygon);
 
 struct Flatland {
     FlatlandPlane plane;

@@ -47,16 +47,16 @@ std::string ordinal(int k) {
 
 // Each map's boundaries of u (dimmed) and of v in the map's colour of the Camera view's overlay.
 void draw_texel_lines(SpaceCanvas& canvas, const Flatland& f, const ShadowSetup& setup, const Placement& placement) {
-    for (size_t m = 0; m < setup.maps.size(); ++m)
+    for (const MapSection& map : f.map_volumes)  // one per map the frame shows
         for (int axis : {0, 1}) {
             std::vector<Polyline> lines;
             for (const TexelLine& line : f.texel_lines)
-                if (line.map == static_cast<int>(m) && line.axis == axis) lines.push_back(line.points);
-            const glm::dvec3 colour(kMapPalette[m % kMapPalette.size()]);
-            const std::string whose = setup.maps.size() > 1 ? map_name(setup, m) + ": " : "";
+                if (line.map == map.map && line.axis == axis) lines.push_back(line.points);
+            const glm::dvec3 colour(kMapPalette[map.map % kMapPalette.size()]);
+            const std::string whose = setup.maps.size() > 1 ? map_name(setup, map.map) + ": " : "";
             canvas.draw(segments_polydata(segments_of(lines), placement),
                         {.colour = axis == 0 ? dimmed(colour) : colour, .width = 1.0},
-                        whose + (axis == 0 ? "u = i/" : "v = j/") + std::to_string(f.texels) + ", " +
+                        whose + (axis == 0 ? "u = i/" : "v = j/") + std::to_string(map.texels) + ", " +
                             ordinal(f.stride) + " boundary");
         }
 }
@@ -67,13 +67,9 @@ void draw_sections(SpaceCanvas& canvas, const Flatland& f, const Placement& plac
         volumes.insert(volumes.end(), section.outline.begin(), section.outline.end());
     canvas.draw(segments_polydata(segments_of(volumes), placement),
                 {.colour = role_style(Role::map).colour, .width = 2.0}, "map volume (a warp's frustum)");
-    const auto closed = [](std::vector<glm::dvec3> polygon) {
-        if (!polygon.empty()) polygon.push_back(polygon.front());
-        return std::vector<Polyline>{polygon};
-    };
-    canvas.draw(segments_polydata(segments_of(closed(f.body)), placement),
+    canvas.draw(segments_polydata(segments_of({closed_outline(f.body)}), placement),
                 {.colour = role_style(Role::focus).colour, .width = 2.0}, "intersection body B");
-    canvas.draw(segments_polydata(segments_of(closed(f.frustum)), placement),
+    canvas.draw(segments_polydata(segments_of({closed_outline(f.frustum)}), placement),
                 {.colour = role_style(Role::view).colour, .width = 2.0}, "camera frustum");
 }
 
