@@ -68,18 +68,19 @@ struct TexelFamily {
     }
 };
 
-TexelFamily texel_family(const GridSamples& uvz_of_map, const std::vector<glm::dvec3>& uvz, int map, int axis,
-                         int texels) {
-    TexelFamily family{map, axis, texels, uvz_of_map, INFINITY, -INFINITY, 0.0};
-    for (size_t k = 0; k < uvz.size(); ++k) family.samples.values[k] = uvz[k][axis] * texels;
-    const PlaneGrid& g = family.samples.grid;
+TexelFamily texel_family(const PlaneGrid& g, const std::vector<glm::dvec3>& uvz, int map, int axis, int texels) {
+    TexelFamily family{map, axis, texels, {g, {}}, INFINITY, -INFINITY, 0.0};
+    for (const glm::dvec3& sample : uvz) {
+        family.samples.values.push_back(sample[axis] * texels);
+        if (std::isnan(sample[axis])) continue;
+        family.least = std::min(family.least, family.samples.values.back());
+        family.most = std::max(family.most, family.samples.values.back());
+    }
     const glm::dvec2 cell = g.cell_size();
     std::vector<double> densities;
     for (int j = 0; j < g.cells.y; ++j)
         for (int i = 0; i < g.cells.x; ++i) {
             const double value = family.samples.at(i, j);
-            if (std::isnan(value)) continue;
-            family.least = std::min(family.least, value), family.most = std::max(family.most, value);
             const double across_s = std::abs(family.samples.at(i + 1, j) - value) / cell.x,
                          across_t = std::abs(family.samples.at(i, j + 1) - value) / cell.y;
             if (!std::isnan(across_s + across_t)) densities.push_back(std::hypot(across_s, across_t));
@@ -167,7 +168,7 @@ Flatland flatland(const ShadowInputs& in, const ShadowSetup& setup, int texture_
         if (!served) continue;
         const int texels = static_cast<int>(std::lround(tile_resolution(setup.maps[m], texture_resolution)));
         f.texels = std::max(f.texels, texels);
-        for (int axis : {0, 1}) families.push_back(texel_family(chosen, uvz, m, axis, texels));
+        for (int axis : {0, 1}) families.push_back(texel_family(grid, uvz, m, axis, texels));
         f.map_volumes.push_back(map_section(f, setup.maps[m], m, grid));
         f.map_volumes.back().texels = texels;
     }
