@@ -47,6 +47,9 @@ const std::vector<NoteInfo>& all_note_kinds() {
         {warp_loses, F, "warp loses to the focused map",
          "measured, the warp misclassifies more than twice the focused map's share (and 0.05 percentage points "
          "more): the cause and the numbers follow; the focused map serves this view better"},
+        {light_along_view, F, "light along the view",
+         "the light travels (almost) along the view direction, so no one plane holds both: the flatland plane "
+         "is the one of the view direction and the camera's up"},
         {blend_read_as_mask, F, "BLEND caster read as MASK",
          "a shadow map keeps one depth per texel, no partial coverage: a glTF material with alphaMode BLEND "
          "casts where its alpha is at least 0.5 and not elsewhere, in the maps, the GPU pass and the reference"},

@@ -37,6 +37,8 @@ enum class NoteKind {
     outside_clipmap,
     // Found when a warp is measured against the reference.
     warp_loses,
+    // Fallbacks of the analyses drawn beside a method (the flatland plane).
+    light_along_view,
     // Fallbacks of the scene's loading.
     blend_read_as_mask,
     alpha_texture_missing,

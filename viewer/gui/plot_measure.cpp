@@ -5,6 +5,8 @@
 
 #include "metrics/bias_sweep.hpp"
 #include "metrics/measurement.hpp"
+#include "model/inspection.hpp"
+#include "plot/density_chart.hpp"
 #include "plot/bias_chart.hpp"
 #include "plot/shimmer_chart.hpp"
 #include "registry/method.hpp"
@@ -43,6 +45,15 @@ ChartSpec acne_against_bias(const MeasureContext& context, const Method& method,
     return chart;
 }
 
+// The method's map at the window's resolution, no reference traced: its density along the view
+// against the ideal of an image as tall as the map is wide (H = R: as many pixels as texels).
+ChartSpec density_along_view(const PlotRequest& request) {
+    const Inspection in = inspect_scene(
+        request.scene, {.method = request.method, .settings = request.settings, .resolution = request.resolution});
+    return density_chart(texel_density_over_view(in.inputs, in.setup, in.resolution, in.resolution), in.name(),
+                         in.resolution, in.resolution);
+}
+
 }  // namespace
 
 std::string plot_work(const PlotRequest& request) {
@@ -53,6 +64,8 @@ std::string plot_work(const PlotRequest& request) {
         case PlotKind::acne_against_bias:
             return "plot: measuring " + request.method +
                    " at 0 and 1/16 to 32 times the slope-scaled bias against the exact reference";
+        case PlotKind::density_along_view:
+            return "plot: " + request.method + "'s texels per unit of view depth along the view axis";
         case PlotKind::error_against_resolution: break;
     }
     return "plot: measuring " + request.method + " at 256² to 2048² against the exact reference";
@@ -61,9 +74,15 @@ std::string plot_work(const PlotRequest& request) {
 Plot measure_plot(const PlotRequest& request) {
     const Method& method = method_or_throw(request.method);
     if (!method.makes_maps()) throw std::invalid_argument("plot: " + method.name + " makes no shadow map");
+    Plot plot;
+    if (request.kind == PlotKind::density_along_view) {
+        plot.chart = density_along_view(request);
+        plot.chart.width = 520;
+        plot.chart.height = 320;
+        return plot;
+    }
     const MeasureContext context = prepare_measurement(request.scene, kPlotImageWidth, kPlotImageWidth);
     const Settings settings = resolve_settings(method.name, method.settings, request.settings);
-    Plot plot;
     if (request.kind == PlotKind::shimmer) {
         const CameraPath path{CameraPath::Kind::translate, kShimmerFrames, 0.0};
         plot.shimmer =

@@ -2,7 +2,8 @@
 // What the Plot dock shows, measured: for one method on the exact reference of a small camera
 // image, its error and aliasing against map resolution, its shimmer while the camera moves
 // sideways (the same measure as `shadowlab shimmer`), or its acne and peter panning against the
-// slope-scaled bias's scale (as `shadowlab sweep --bias` draws them). No Qt, no drawing: the
+// slope-scaled bias's scale (as `shadowlab sweep --bias` draws them), or its texels per unit of
+// view depth along the view axis against the ideal (core/flatland/texel_density.hpp). No Qt, no drawing: the
 // window's worker measures it off the GUI thread (gui/background_inspection.hpp) and the dock draws it.
 #include <map>
 #include <optional>
@@ -14,7 +15,7 @@
 
 namespace shadowlab {
 
-enum class PlotKind { error_against_resolution, shimmer, acne_against_bias };
+enum class PlotKind { error_against_resolution, shimmer, acne_against_bias, density_along_view };
 
 // The shimmer plot's path and image: `shadowlab shimmer SCENE --frames 30 --size 320x320` measures the same.
 constexpr int kShimmerFrames = 30, kPlotImageWidth = 320;
@@ -24,7 +25,7 @@ struct PlotRequest {
     Scene scene;
     std::string method;                           // a map method of the registry
     std::map<std::string, std::string> settings;  // the window's, as text
-    int resolution = 1024;                        // shimmer and bias: the map's; error: 256² to 2048²
+    int resolution = 1024;                        // shimmer, bias and density: the map's; error: 256² to 2048²
 };
 
 struct Plot {

@@ -14,6 +14,7 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent), kind_(new QComboBox(thi
     kind_->addItem(QString("Shimmer: the camera moving sideways, %1 frames").arg(kShimmerFrames),
                    static_cast<int>(Kind::shimmer));
     kind_->addItem("Acne / peter panning against bias_slope", static_cast<int>(Kind::acne_against_bias));
+    kind_->addItem("Texels per unit of view depth against the ideal", static_cast<int>(Kind::density_along_view));
     image_->setAlignment(Qt::AlignCenter);
     image_->setMinimumSize(320, 200);
     image_->setScaledContents(false);

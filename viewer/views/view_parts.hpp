@@ -24,7 +24,8 @@ View texels_view();
 View error_view();
 View stencil_view();
 View page_table_view();  // page_table_view.cpp
-View difference_view();
+View difference_view();  // difference_view.cpp
+View flatland_view();    // flatland_view.cpp
 
 // The camera image the Error view judges (a technique's own; for a map, options.width x height).
 glm::ivec2 judged_image_size(const Inspection& in, const ViewOptions& options);

@@ -9,8 +9,8 @@ namespace {
 
 std::deque<View>& registry() {
     static std::deque<View> views{
-        camera_view(), world_view(), light_space_view(), ppls_view(),       shadow_map_view(),
-        texels_view(), error_view(), stencil_view(),     page_table_view(), difference_view(),
+        camera_view(), world_view(),   light_space_view(), ppls_view(),       shadow_map_view(), texels_view(),
+        error_view(),  stencil_view(), page_table_view(),  difference_view(), flatland_view(),
     };
     return views;
 }
