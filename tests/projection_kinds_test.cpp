@@ -18,7 +18,8 @@ namespace {
 const glm::dvec3 kLight{0.0, 5.0, 0.0};
 
 // A map of the kind seen from kLight looking down -y: every kind reads the fields it uses, a 90°
-// perspective world_to_uvz (near 1, far 11) or the paraboloid's frame (+z is world -y), near and far.
+// perspective world_to_uvz (near 1, far 11), the log warp over the same distances or the paraboloid's
+// frame (+z is world -y), near and far.
 ShadowMap map_of(Projection projection) {
     const glm::dmat4 clip_from_world = glm::perspective(glm::radians(90.0), 1.0, 1.0, 11.0) *
                                        glm::lookAt(kLight, glm::dvec3(0.0), glm::dvec3(0, 0, 1));
@@ -28,7 +29,8 @@ ShadowMap map_of(Projection projection) {
         .paraboloid = {.centre = kLight,
                        .frame_from_world = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0)),
                        .near = 1.0,
-                       .far = 11.0}};
+                       .far = 11.0},
+        .log_warp = {.near = 1.0, .far = 11.0}};
 }
 
 // Points of the unit cube's inside, u, v, d in {0.1, 0.3, ..., 0.9}.
