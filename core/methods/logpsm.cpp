@@ -87,7 +87,8 @@ void record_rows(Trace& t, const LispsmWarp& w, const ShadowMap& map) {
 // The log warp in the perspective's post-perspective space (PPLS), where the perspective's own rows
 // are even: v = c0 log(c1 v_p + c2) (Lloyd et al. 2008, F_lp) with c0 = 1 / log(n / f), c1 = n / f - 1,
 // c2 = 1, v_p the perspective's unit v. The map's rows, v = k / K, lie at v_p = (1 - (n / f)^v) / (1 - n / f):
-// spaced logarithmically, bunched toward the near end; the perspective's rows beside them on the left half.
+// sparser than the perspective's at the near end, bunched toward far, where the perspective alone
+// spends too few; the perspective's even rows beside them over half the width.
 void record_log_warp(Trace& t, const LispsmWarp& w, const ShadowMap& map) {
     const double ratio = map.log_warp.near / map.log_warp.far;
     const glm::dmat4 ppls_from_uvz = glm::inverse(w.uvz_from_ppls);
@@ -102,8 +103,8 @@ void record_log_warp(Trace& t, const LispsmWarp& w, const ShadowMap& map) {
         perspective_rows.segments.push_back(row(v, 0.5));
     }
     t.add("logpsm-log", "Logarithmic warp",
-          "v = c0 log(c1 v_p + c2) = log(w/n) / log(f/n): the map's rows (v = k/K) in the warped box, bunched "
-          "toward near; the perspective's even rows v_p = k/K on the left half",
+          "v = c0 log(c1 v_p + c2) = log(w/n) / log(f/n): the map's rows (v = k/K) in the warped box, sparse "
+          "near and bunched toward far; the perspective's even rows v_p = k/K over half the width",
           Space::ppls)
         .value("c0", 1.0 / std::log(ratio))
         .value("c1", ratio - 1.0)
