@@ -159,7 +159,7 @@ TEST(LogPsm, AShortLogRangeKeepsThePerspectiveAloneUnderANamedNote) {
     EXPECT_EQ(setup.maps[0].projection, Projection::linear);
 }
 
-// The claim (Lloyd et al. 2008, section 7): on the overhead view (far / near = 1,000, the sun
+// The claim (Lloyd et al. 2008's comparison): on the overhead view (far / near = 1,000, the sun
 // low), at equal texels (one 2048² map each) over the same focus region (the body B, each method's
 // default), LogPSM's greatest perspective aliasing m is below LiSPSM's and TSM's.
 TEST(LogPsm, MaximumPerspectiveErrorIsBelowLispsmsAndTsmsOnTheOverheadView) {

@@ -20,6 +20,7 @@
 #include "methods/lispsm.hpp"
 #include "methods/map_fit.hpp"
 #include "methods/step_figures.hpp"
+#include "methods/tessellate_setting.hpp"
 #include "methods/warp_common.hpp"
 
 namespace shadowlab {
@@ -85,8 +86,8 @@ void record_rows(Trace& t, const LispsmWarp& w, const ShadowMap& map) {
 }
 
 // The log warp in the perspective's post-perspective space (PPLS), where the perspective's own rows
-// are even: v = c0 log(c1 v_p + c2) (Lloyd et al. 2008, F_lp) with c0 = 1 / log(n / f), c1 = n / f - 1,
-// c2 = 1, v_p the perspective's unit v. The map's rows, v = k / K, lie at v_p = (1 - (n / f)^v) / (1 - n / f):
+// are even: v = c0 log(c1 v_p + c2) (F_lp as a log of the perspective's own v_p) with c0 = 1 / log(n / f), c1 = n / f -
+// 1, c2 = 1, v_p the perspective's unit v. The map's rows, v = k / K, lie at v_p = (1 - (n / f)^v) / (1 - n / f):
 // sparser than the perspective's at the near end, bunched toward far, where the perspective alone
 // spends too few; the perspective's even rows beside them over half the width.
 void record_log_warp(Trace& t, const LispsmWarp& w, const ShadowMap& map) {
@@ -157,17 +158,12 @@ ShadowSetup compute_logpsm(const ShadowInputs& in, const Settings& s, Trace* tra
 }
 
 std::vector<SettingSpec> logpsm_settings() {
-    return {{"eta",
-             "Lloyd's η for the perspective part: 1 (the default) centres it at the eye's depth",
-             "1",
-             -1.0,
-             1.0,
-             {}},
-            {.name = "tessellate",
-             .description = "split casters until no edge bows more than this many texels from its chord; 0: as given",
-             .default_value = "0.5",
-             .min = 0.0,
-             .max = 64.0},
+    return {{.name = "eta",
+             .description = "Lloyd's η for the perspective part: 1 (the default) centres it at the eye's depth",
+             .default_value = "1",
+             .min = -1.0,
+             .max = 1.0},
+            tessellate_setting("0.5"),
             body_kernel_setting()};
 }
 
