@@ -102,7 +102,7 @@ glm::dvec2 uv_derivative(const ShadowMap& map, const glm::dvec3& p, const glm::d
 }
 
 std::vector<NamedValue> parameters(const ShadowMap& map) {
-    return {{"world_to_uvz", map.world_to_uvz}, {"near", map.log_warp.near}, {"far", map.log_warp.far}};
+    return {{"world_to_uvz", map.world_to_uvz}, {"log_near", map.log_warp.near}, {"log_far", map.log_warp.far}};
 }
 
 }  // namespace
@@ -117,7 +117,6 @@ constinit const ProjectionKind log_perspective_projection{.name = "log perspecti
                                                           .depth_slope = depth_slope,
                                                           .distance_back_to_depth = distance_back_to_depth,
                                                           .parameters = parameters,
-                                                          .parameters_key = "log_perspective",
                                                           .glsl = "log_perspective_projection",
                                                           .glsl_prefix = "shadowLogPerspective"};
 
