@@ -17,6 +17,7 @@
 #include "raster/paraboloid_edges.hpp"
 #include "reference/traced_depth_map.hpp"
 #include "scene/scene.hpp"
+#include "sampled_bow.hpp"
 
 using namespace shadowlab;
 
@@ -32,12 +33,7 @@ glm::dvec2 image_at(const Paraboloid& p, const glm::dvec3& a, const glm::dvec3& 
 
 // The greatest distance of the projected edge's points from its chord, over `samples` + 1 points.
 double sampled_sagitta(const Paraboloid& p, const glm::dvec3& a, const glm::dvec3& b, int samples) {
-    const glm::dvec2 from = image_at(p, a, b, 0.0), to = image_at(p, a, b, 1.0);
-    const glm::dvec2 across = glm::normalize(glm::dvec2(from.y - to.y, to.x - from.x));
-    double greatest = 0.0;
-    for (int k = 0; k <= samples; ++k)
-        greatest = std::max(greatest, std::abs(glm::dot(image_at(p, a, b, double(k) / samples) - from, across)));
-    return greatest;
+    return shadowlab::testing::sampled_bow([&](double t) { return image_at(p, a, b, t); }, samples);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "methods/lispsm.hpp"
 #include "registry/method.hpp"
 #include "scene/scene_loader.hpp"
+#include "step_values.hpp"
 #include "test_support.hpp"
 
 using namespace shadowlab;
@@ -27,14 +28,6 @@ Traced run(const std::string& method, const ShadowInputs& in, const std::map<std
 
 ShadowInputs scene_inputs(const std::string& name) {
     return gather_inputs(load_scene(source_path("data/scenes/" + name + ".json")));
-}
-
-double value(const Trace& trace, const std::string& step, const std::string& name) {
-    const Step* s = trace.find(step);
-    if (!s) throw std::runtime_error("no step " + step);
-    for (const NamedValue& v : s->values)
-        if (v.name == name) return std::get<double>(v.value);
-    throw std::runtime_error("no value " + name + " in step " + step);
 }
 
 }  // namespace
@@ -59,7 +52,7 @@ TEST(Lispsm, WarpFadesSmoothlyToTheFocusedMapAsTheLightTurnsParallel) {
         scene.light.direction = std::cos(gamma) * view + std::sin(gamma) * side;
         const Traced r = run("lispsm", gather_inputs(scene));
         ASSERT_TRUE(r.setup.fallbacks.empty()) << "γ = " << gamma;
-        const double ratio = value(r.trace, "n-opt", "n") / value(r.trace, "n-opt", "z_f");
+        const double ratio = step_value(r.trace, "n-opt", "n") / step_value(r.trace, "n-opt", "z_f");
         EXPECT_GT(ratio, previous_ratio) << "n grows relative to the body as γ shrinks";
         previous_ratio = ratio;
     }
@@ -137,23 +130,23 @@ TEST(Xpsm, MinersLampIsANamedFallback) {
     const Traced r = run("xpsm", scene_inputs("light_parallel_behind"));
     ASSERT_FALSE(r.setup.fallbacks.empty());
     EXPECT_TRUE(has_note(r.setup.fallbacks, NoteKind::miners_lamp));
-    EXPECT_LT(value(r.trace, "xpsm-3", "abs_V_xy"), 0.1);
+    EXPECT_LT(step_value(r.trace, "xpsm-3", "abs_V_xy"), 0.1);
 }
 
 TEST(Xpsm, LengthPIsClippedWhenCastersLieBehindTheViewer) {
     const Traced r = run("xpsm", scene_inputs("casters_behind"), {{"coef", "1"}});
-    EXPECT_EQ(value(r.trace, "xpsm-7", "clipped"), 1.0);
-    EXPECT_DOUBLE_EQ(value(r.trace, "xpsm-7", "lengthP"), value(r.trace, "xpsm-5", "maxLengthP"));
+    EXPECT_EQ(step_value(r.trace, "xpsm-7", "clipped"), 1.0);
+    EXPECT_DOUBLE_EQ(step_value(r.trace, "xpsm-7", "lengthP"), step_value(r.trace, "xpsm-5", "maxLengthP"));
 }
 
 TEST(Psm, KozlovsRemediesAreNamedSteps) {
     const Traced behind = run("psm", scene_inputs("casters_behind"));
-    EXPECT_GT(value(behind.trace, "psm-virtual-camera", "slide"), 0.0) << "casters behind: camera slid back";
+    EXPECT_GT(step_value(behind.trace, "psm-virtual-camera", "slide"), 0.0) << "casters behind: camera slid back";
     EXPECT_EQ(behind.trace.find("psm-light-frustum")->title, "Inverted projection (Kozlov)");
     const Traced front = run("psm", scene_inputs("default"));
-    EXPECT_EQ(value(front.trace, "psm-light-frustum", "inverted"), 0.0);
+    EXPECT_EQ(step_value(front.trace, "psm-light-frustum", "inverted"), 0.0);
     const Traced overhead = run("psm", scene_inputs("light_overhead"));
-    EXPECT_NEAR(value(overhead.trace, "psm-light", "w_over_length"), 0.0, 1e-9);  // directional in PPS
+    EXPECT_NEAR(step_value(overhead.trace, "psm-light", "w_over_length"), 0.0, 1e-9);  // directional in PPS
     EXPECT_EQ(overhead.trace.find("psm-light-frustum"), nullptr);
 }
 

@@ -5,6 +5,7 @@
 
 #include <set>
 #include <string>
+#include <utility>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "maps/clip_conventions.hpp"
@@ -17,18 +18,31 @@ namespace {
 
 const glm::dvec3 kLight{0.0, 5.0, 0.0};
 
-// A map of the kind seen from kLight looking down -y: every kind reads the fields it uses, a 90°
-// perspective world_to_uvz (near 1, far 11) or the paraboloid's frame (+z is world -y), near and far.
+// A map of the kind seen from kLight: every kind reads the fields it uses. Looking down -y, a 90°
+// perspective world_to_uvz (near 1, far 11) or the paraboloid's frame (+z is world -y), near and far;
+// a log perspective looks across the light as LogPSM's warp does (along -z, its depth the light's -y
+// and its w the distance along -z, logarithmic over the same 1 to 11).
 ShadowMap map_of(Projection projection) {
-    const glm::dmat4 clip_from_world = glm::perspective(glm::radians(90.0), 1.0, 1.0, 11.0) *
-                                       glm::lookAt(kLight, glm::dvec3(0.0), glm::dvec3(0, 0, 1));
+    const glm::dmat4 perspective = glm::perspective(glm::radians(90.0), 1.0, 1.0, 11.0);
+    const glm::dmat4 down = uvz_from_clip({}) * perspective * glm::lookAt(kLight, glm::dvec3(0.0), glm::dvec3(0, 0, 1));
+    glm::dmat4 across =
+        uvz_from_clip({}) * perspective * glm::lookAt(kLight, kLight - glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0));
+    for (int column = 0; column < 4; ++column)
+        std::swap(across[column][1], across[column][2]);  // depth along the light
     return {
         .projection = projection,
-        .world_to_uvz = uvz_from_clip({}) * clip_from_world,
+        .world_to_uvz = projection == Projection::log_perspective ? across : down,
         .paraboloid = {.centre = kLight,
                        .frame_from_world = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0)),
                        .near = 1.0,
-                       .far = 11.0}};
+                       .far = 11.0},
+        .log_warp = {.near = 1.0, .far = 11.0}};
+}
+
+// The light's direction at p for map_of's map: a directional light along the log perspective's depth
+// (its centre is no light: depth is constant along the rays from it), from kLight for the others.
+glm::dvec3 light_direction_at(Projection projection, const glm::dvec3& p) {
+    return projection == Projection::log_perspective ? glm::dvec3(0, -1, 0) : glm::normalize(p - kLight);
 }
 
 // Points of the unit cube's inside, u, v, d in {0.1, 0.3, ..., 0.9}.
@@ -88,15 +102,16 @@ TEST(ProjectionKinds, TheLookupReadsTheMapThroughItsDescriptor) {
     }
 }
 
-// Along the ray from the light through each point: the derivatives match central differences of the
-// mapping, and distance_back_to_depth finds the point 0.3 back toward the light by its depth.
+// Along the ray from the light through each point (light_direction_at): the derivatives match central
+// differences of the mapping, and distance_back_to_depth finds the point 0.3 back toward the light by
+// its depth.
 TEST(ProjectionKinds, TheDerivativesAreThoseOfTheMapping) {
     constexpr double step = 1e-5, back = 0.3;
     for (Projection projection : projection_kinds()) {
         const ShadowMap map = map_of(projection);
         const ProjectionKind& kind = projection_kind(map);
         for (const glm::dvec3& uvz : unit_cube_points()) {
-            const glm::dvec3 p = kind.world_of(map, uvz), l = glm::normalize(p - kLight);
+            const glm::dvec3 p = kind.world_of(map, uvz), l = light_direction_at(projection, p);
             const glm::dvec3 central =
                 (divided(kind.homogeneous(map, p + step * l)) - divided(kind.homogeneous(map, p - step * l))) /
                 (2.0 * step);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "maps/linear_projection.hpp"
+#include "maps/log_perspective_projection.hpp"
 #include "maps/paraboloid_projection.hpp"
 
 namespace shadowlab {
@@ -16,6 +17,7 @@ const ProjectionKind* registered(Projection projection) {
         case Projection::linear: return &linear_projection;
         case Projection::paraboloid: return &paraboloid_projection;
         case Projection::cube_face: return &cube_face_projection;
+        case Projection::log_perspective: return &log_perspective_projection;
     }
     return nullptr;
 }

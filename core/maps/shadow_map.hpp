@@ -13,9 +13,10 @@ namespace shadowlab {
 // The projection kinds, each described once by its ProjectionKind (maps/projection_kind.hpp,
 // registered in maps/projection_kinds.cpp), through which every reader goes.
 enum class Projection {
-    linear,      // a 4x4, world (x, y, z, 1) -> (u w, v w, d_pre, w): orthographic, perspective and warped maps
-    paraboloid,  // one hemisphere of a dual-paraboloid map (Brabec, Annen and Seidel 2002)
-    cube_face,   // one 90° face of a cube map: a linear 4x4, numbered 0..5 for +x, -x, +y, -y, +z, -z
+    linear,           // a 4x4, world (x, y, z, 1) -> (u w, v w, d_pre, w): orthographic, perspective and warped maps
+    paraboloid,       // one hemisphere of a dual-paraboloid map (Brabec, Annen and Seidel 2002)
+    cube_face,        // one 90° face of a cube map: a linear 4x4, numbered 0..5 for +x, -x, +y, -y, +z, -z
+    log_perspective,  // a perspective 4x4 whose v is then warped logarithmically along w (LogPSM, Lloyd et al. 2008)
 };
 const char* to_string(Projection projection);  // its kind's name
 
@@ -28,10 +29,18 @@ struct Paraboloid {
     double near = 0.01, far = 1.0;
 };
 
+// A logarithmic perspective map's warp of v (Lloyd, Govindaraju, Quammen, Molnar and Manocha 2008):
+// v = log(w / near) / log(far / near), w the distance its 4x4's last row gives (the perspective
+// warp's distance from its centre, near at the focus region's first texel row and far at its last).
+struct LogWarp {
+    double near = 1.0, far = 2.0;
+};
+
 struct ShadowMap {
     Projection projection = Projection::linear;
     glm::dmat4 world_to_uvz{1.0};             // linear and cube_face: u, v, d in [0,1] after division by w
     Paraboloid paraboloid;                    // paraboloid only
+    LogWarp log_warp;                         // log_perspective only: its v, u and d from world_to_uvz
     int cube_face = 0;                        // cube_face only: 0..5 for +x, -x, +y, -y, +z, -z
     glm::dvec4 viewport{0.0, 0.0, 1.0, 1.0};  // (u0, v0, u1, v1): the map's tile in the texture
     // The selection rule face_axis: the unit direction from the selection's centre this map faces.
@@ -44,9 +53,9 @@ struct ShadowMap {
     // Pre-division depth offset per world unit of bias along the light (XPSM step 18):
     // d' = (d_pre - z_bias_scale * bias) / w.
     double z_bias_scale = 1.0;
-    // paraboloid only: the casters' triangles are split until no projected edge bows more than this
-    // many texels from its straight chord (a GPU joins projected vertices by straight edges, while the
-    // true image of a straight edge is a curve); 0: drawn as given.
+    // paraboloid and log_perspective: the casters' triangles are split until no projected edge bows
+    // more than this many texels from its straight chord (a GPU joins projected vertices by straight
+    // edges, while the true image of a straight edge is a curve); 0: drawn as given.
     double max_sagitta_texels = 0.0;
 };
 

@@ -20,6 +20,7 @@
 #include "methods/map_fit.hpp"
 #include "methods/omni_light.hpp"
 #include "methods/step_figures.hpp"
+#include "methods/tessellate_setting.hpp"
 
 namespace shadowlab {
 namespace {
@@ -189,11 +190,7 @@ std::vector<SettingSpec> dpsm_settings() {
                             "direction, or a spot light's axis",
              .default_value = "down",
              .choices = {"down", "view", "spot"}},
-            {.name = "tessellate",
-             .description = "split casters until no edge bows more than this many texels from its chord; 0: as given",
-             .default_value = "0",
-             .min = 0.0,
-             .max = 64.0},
+            tessellate_setting("0"),
             body_kernel_setting()};
 }
 

@@ -204,6 +204,42 @@ LispsmWarp lispsm_warp(const LispsmRequest& req) {
     return w;
 }
 
+void record_light_space(Trace& t, const LispsmWarp& w, const glm::dmat4& space_from_world,
+                        const glm::dvec3& view_direction, const glm::dvec3& light_direction,
+                        const std::string& view_name) {
+    t.add("light-space", "Light space", "z = light direction, y = view direction made perpendicular to it",
+          Space::light)
+        .value("world_to_light", w.light_from_world)
+        .shape("B", PointSet{w.ls_body}, Role::focus)
+        .shape("B box", w.ls_body_box, Role::focus);
+    t.set_frame(Space::light, w.light_from_world * space_from_world);
+    // γ is the angle between the view direction V and the light direction L (+z in light space).
+    const glm::dvec3 ls_view = glm::dmat3(w.light_from_world) * view_direction, ls_light{0, 0, 1};
+    const double arm = w.ls_body_box.diagonal() / 4;
+    const double cos_gamma = glm::dot(view_direction, light_direction);
+    Step& gamma =
+        t.add("gamma", "Angle γ", "sin γ = |view × light|: 1 when the light is perpendicular to the view", Space::light)
+            .value("sin_gamma", w.sin_gamma)
+            .value("gamma_deg", glm::degrees(std::atan2(w.sin_gamma, cos_gamma)));
+    draw_arrow(gamma, view_name, w.ls_eye, ls_view, arm, Role::view);
+    draw_arrow(gamma, "L", w.ls_eye, ls_light, arm, Role::light);
+    draw_angle(gamma, "γ", w.ls_eye, ls_view, ls_light, arm / 2);
+}
+
+void record_warp(Trace& t, const LispsmWarp& w, const glm::dmat4& space_from_world) {
+    Step& frustum = t.add("warp-frustum", "Warp frustum",
+                          "centre C = (eye x, near face of B - n, eye z), near n, far n + depth(B)", Space::light)
+                        .value("C", w.ls_centre)
+                        .value("near", w.n)
+                        .value("far", w.n + w.depth);
+    draw_warp_frustum(frustum, w);
+    t.add("warp", "Perspective warp P", "x' = x/y, y' = f(y - n)/((f - n) y), z' = z/y about C", Space::ppls)
+        .value("P", w.ppls_from_light)
+        .shape("warped B", PointSet{w.ppls_body.points}, Role::focus)
+        .shape("warped box", w.ppls_box, Role::map);
+    t.set_frame(Space::ppls, w.ppls_from_light * w.light_from_world * space_from_world);
+}
+
 void draw_warp_frustum(Step& step, const LispsmWarp& w) {
     const Frustum warp_frustum = preimage_of_box(w.ppls_from_light, w.ppls_box, 1);
     step.shape("P", warp_frustum)
@@ -268,24 +304,8 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
             space.from_world);
     record(trace, [&](Trace& t) {
         if (spot) record_light_perspective(t, space, w);
-        t.add("light-space", "Light space", "z = light direction, y = view direction made perpendicular to it",
-              Space::light)
-            .value("world_to_light", w.light_from_world)
-            .shape("B", PointSet{w.ls_body}, Role::focus)
-            .shape("B box", w.ls_body_box, Role::focus);
-        t.set_frame(Space::light, w.light_from_world * space.from_world);
-        // γ is the angle between the view direction V and the light direction L (+z in light space).
-        const glm::dvec3 ls_view = glm::dmat3(w.light_from_world) * space.view_direction, ls_light{0, 0, 1};
-        const double arm = w.ls_body_box.diagonal() / 4;
-        const double cos_gamma = glm::dot(space.view_direction, space.light_direction);
-        Step& gamma = t.add("gamma", "Angle γ", "sin γ = |view × light|: 1 when the light is perpendicular to the view",
-                            Space::light)
-                          .value("sin_gamma", w.sin_gamma)
-                          .value("gamma_deg", glm::degrees(std::atan2(w.sin_gamma, cos_gamma)));
-        const std::string view_name = spot ? "g" : "V";  // in SPPS g stands for the view: γ = 90° by construction
-        draw_arrow(gamma, view_name, w.ls_eye, ls_view, arm, Role::view);
-        draw_arrow(gamma, "L", w.ls_eye, ls_light, arm, Role::light);
-        draw_angle(gamma, "γ", w.ls_eye, ls_view, ls_light, arm / 2);
+        // In SPPS g stands for the view: γ = 90° by construction.
+        record_light_space(t, w, space.from_world, space.view_direction, space.light_direction, spot ? "g" : "V");
         Step& n_opt = t.add("n-opt", "n_opt",
                             "n = (z_n + sqrt(z_n z_f)) / sin γ, z_f = z_n + depth(B) sin γ; Lloyd's η: "
                             "warp far/near = (z_f/z_n)^((1+η)/2); z_n: the nearest receiver seen (or the virtual "
@@ -327,17 +347,7 @@ ShadowSetup compute_lispsm(const ShadowInputs& in, const Settings& s, Trace* tra
     }
     setup.maps.push_back(map);
     record(trace, [&](Trace& t) {
-        Step& frustum = t.add("warp-frustum", "Warp frustum",
-                              "centre C = (eye x, near face of B - n, eye z), near n, far n + depth(B)", Space::light)
-                            .value("C", w.ls_centre)
-                            .value("near", w.n)
-                            .value("far", w.n + w.depth);
-        draw_warp_frustum(frustum, w);
-        t.add("warp", "Perspective warp P", "x' = x/y, y' = f(y - n)/((f - n) y), z' = z/y about C", Space::ppls)
-            .value("P", w.ppls_from_light)
-            .shape("warped B", PointSet{w.ppls_body.points}, Role::focus)
-            .shape("warped box", w.ppls_box, Role::map);
-        t.set_frame(Space::ppls, w.ppls_from_light * w.light_from_world * space.from_world);
+        record_warp(t, w, space.from_world);
         Step& unit =
             t.add("unit-cube", "Unit cube transform", "(p - min) / (max - min) over the warped body", Space::unit)
                 .value("warped_to_unit", w.uvz_from_ppls)

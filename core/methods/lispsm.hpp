@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 #include <vector>
 
 #include "geometry/aabb.hpp"
@@ -43,6 +44,15 @@ struct LispsmWarp {
     ShadowMap map;  // uvz_from_ppls * ppls_from_light * light_from_world
 };
 LispsmWarp lispsm_warp(const LispsmRequest& request);
+
+// LiSPSM's first steps, shared by the warps built on it: light-space (B in light space; the light
+// frame set to light_from_world * space_from_world) and gamma (V, L and the angle between them, the
+// view's arrow named `view_name`).
+void record_light_space(Trace& t, const LispsmWarp& warp, const glm::dmat4& space_from_world,
+                        const glm::dvec3& view_direction, const glm::dvec3& light_direction,
+                        const std::string& view_name);
+// The steps warp-frustum (the frustum P in light space) and warp (B in PPLS; the ppls frame set).
+void record_warp(Trace& t, const LispsmWarp& warp, const glm::dmat4& space_from_world);
 
 // The warp frustum P (the warped body's box taken back into light space, looking along +y from C),
 // drawn with its centre, near and far distances.

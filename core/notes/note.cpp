@@ -33,6 +33,9 @@ const std::vector<NoteInfo>& all_note_kinds() {
          "in the camera's post-perspective space the light sees the region wider than one map holds: the focused map"},
         {warp_not_needed, F, "no warp needed",
          "the spot's own perspective already spreads texels as the eye needs them: the focused map"},
+        {log_range_short, F, "log range too short",
+         "LogPSM's warp spans under e^0.1 in distance (far / near < 1.105): its logarithm would ask more than a "
+         "float's precision of the GPU, and is nearly linear anyway: the perspective warp alone"},
         {no_light_axis, F, "point light without an axis",
          "the warp runs after the light's own perspective, which needs an axis and a cone: the focused map"},
         {no_matrices, F, "no matrices", "the custom method's matrices setting names no file: the focused map"},

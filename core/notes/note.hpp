@@ -30,6 +30,7 @@ enum class NoteKind {
     view_outside_cone,
     light_on_region,
     warp_not_needed,
+    log_range_short,
     no_light_axis,
     no_matrices,
     orthographic_camera,

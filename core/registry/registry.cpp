@@ -10,6 +10,7 @@
 #include "methods/dpsm.hpp"
 #include "methods/focused.hpp"
 #include "methods/lispsm.hpp"
+#include "methods/logpsm.hpp"
 #include "methods/psm.hpp"
 #include "methods/tetra.hpp"
 #include "methods/tsm.hpp"
@@ -77,6 +78,13 @@ std::deque<Method>& registry() {
          .covers = Coverage::shadowable_points,
          .compute_maps = compute_lispsm,
          .reads_visible_depths = lispsm_reads_visible_depths},
+        {.name = "logpsm",
+         .title = "Logarithmic perspective shadow map",
+         .description = "Lloyd et al.: LiSPSM's perspective warp, then a logarithm along the view; curved edges split",
+         .settings = logpsm_settings(),
+         .lights = kDirectionalOnly,
+         .covers = Coverage::shadowable_points,
+         .compute_maps = compute_logpsm},
         {.name = "tsm",
          .title = "Trapezoidal shadow map",
          .description = "Martin and Tan: the view, seen from the light, bounded by a trapezoid warped onto the map",

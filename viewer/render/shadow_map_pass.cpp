@@ -63,6 +63,8 @@ struct MapArrays {
     glm::mat4 paraboloid_frame[kMaxMaps]{};  // a mat3 in a mat4: vtkShaderProgram sets no mat3 arrays
     float paraboloid_near[kMaxMaps]{};
     float paraboloid_far[kMaxMaps]{};
+    float log_near[kMaxMaps]{};
+    float log_far[kMaxMaps]{};
     glm::vec3 face_axis[kMaxMaps]{};
     glm::vec4 viewport[kMaxMaps]{};
     glm::vec4 tile_texels[kMaxMaps]{};  // first and last texel (x, y, x, y) of the tile
@@ -109,6 +111,8 @@ MapArrays map_arrays(const std::vector<ShadowMap>& maps, int resolution) {
         a.paraboloid_frame[i] = glm::mat4(glm::mat3(map.paraboloid.frame_from_world));
         a.paraboloid_near[i] = static_cast<float>(map.paraboloid.near);
         a.paraboloid_far[i] = static_cast<float>(map.paraboloid.far);
+        a.log_near[i] = static_cast<float>(map.log_warp.near);
+        a.log_far[i] = static_cast<float>(map.log_warp.far);
         a.face_axis[i] = glm::vec3(map.face_axis);
         a.viewport[i] = glm::vec4(map.viewport);
         a.tile_texels[i] = glm::vec4(tile.x, tile.y, tile.x + tile.width - 1, tile.y + tile.height - 1);
@@ -200,7 +204,9 @@ bool set_projection_uniforms(ProgramUniforms& program, MapArrays& maps) {
         program.SetUniform3fv("shadowMapParaboloidCentre", kMaxMaps, glm::value_ptr(maps.paraboloid_centre[0])),
         program.SetUniformMatrix4x4v("shadowMapParaboloidFrame", kMaxMaps, glm::value_ptr(maps.paraboloid_frame[0])),
         program.SetUniform1fv("shadowMapParaboloidNear", kMaxMaps, maps.paraboloid_near),
-        program.SetUniform1fv("shadowMapParaboloidFar", kMaxMaps, maps.paraboloid_far));
+        program.SetUniform1fv("shadowMapParaboloidFar", kMaxMaps, maps.paraboloid_far),
+        program.SetUniform1fv("shadowMapLogNear", kMaxMaps, maps.log_near),
+        program.SetUniform1fv("shadowMapLogFar", kMaxMaps, maps.log_far));
 }
 
 // Stage 2: the rest of select_map, look_up and texel_of.

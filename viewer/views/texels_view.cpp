@@ -62,6 +62,13 @@ glm::dvec3 unprojected(const glm::dmat4& world_from_uvz, const glm::dvec3& uvz) 
     return glm::dvec3(h) / h.w;
 }
 
+// A point of the map's unit cube back in the world: a projective map's through its inverse 4x4
+// (computed once per map), a kind that bends edges through its own inverse.
+glm::dvec3 world_of_uvz(const ShadowMap& map, const glm::dmat4& world_from_uvz, const glm::dvec3& uvz) {
+    const ProjectionKind& kind = projection_kind(map);
+    return kind.projective() ? unprojected(world_from_uvz, uvz) : kind.world_of(map, uvz);
+}
+
 // The depth of the texel `steps` texels along `axis` from `texel`, if it lies in the tile and holds a surface.
 std::optional<double> depth_along(const DepthMap& depth, const TileTexels& tile, const glm::ivec2& texel,
                                   const glm::ivec2& axis, int steps) {
@@ -97,7 +104,7 @@ WorldTexel world_texel(const DepthMap& depth, const ShadowMap& map, int index, c
     const auto at = [&](const glm::dvec2& offset) {  // from the texel's centre, in texels
         const glm::dvec2 uv = map_uv(map, glm::dvec2(texel) + 0.5 + offset, depth.resolution);
         // Kept in the map's depth range: a perspective map's points beyond it may lie behind its eye.
-        return unprojected(world_from_uvz, glm::dvec3(uv, std::clamp(here + glm::dot(slope, offset), 0.0, 1.0)));
+        return world_of_uvz(map, world_from_uvz, glm::dvec3(uv, std::clamp(here + glm::dot(slope, offset), 0.0, 1.0)));
     };
     return {.map = index,
             .texel = texel,
@@ -110,7 +117,6 @@ WorldTexel world_texel(const DepthMap& depth, const ShadowMap& map, int index, c
 template <class Visit>
 void for_each_surface_texel(const ShadowSetup& setup, const DepthMap& depth, int stride, Visit&& visit) {
     for (size_t i = 0; i < setup.maps.size(); ++i) {
-        if (!projection_kind(setup.maps[i]).projective()) continue;
         const TileTexels tile = tile_texels(setup.maps[i], depth.resolution);
         for (int y = tile.first.y; y < tile.end.y; y += stride)
             for (int x = tile.first.x; x < tile.end.x; x += stride)
@@ -270,7 +276,7 @@ ViewReport build_texels_view(vtkRenderer* renderer, const Inspection& in, const 
                                        [](const ShadowMap& m) { return !projection_kind(m).projective(); });
         bent != in.setup.maps.end())
         report.notes.push_back(std::string(projection_kind(*bent).name) +
-                               " maps are not back-projected (their texels' edges bend)");
+                               " maps' texels drawn flat between their back-projected corners (their edges bend)");
 
     const DepthMap& surfaces = in.surface_depth();
     const int stride = texel_stride(in.setup, surfaces, kMostQuads);

@@ -161,6 +161,28 @@ TEST(GpuAgreesWithCpuOnOmniMaps, CubeTetrahedronAndDualParaboloidInTheLampRoom) 
         }
 }
 
+// LogPSM's map bends straight edges (a log along the view after LiSPSM's perspective): the vertex
+// shader projects the split casters' vertices as the CPU does (log_perspective_projection.glsl), both
+// cut them at the same clip plane and both look up through the same log, in every depth format.
+TEST(GpuAgreesWithCpuOnLogPsm, OnTheOverheadViewAndTheDefaultScene) {
+    for (const std::string name : {"overhead_view", "default"}) {
+        Scene scene = load_scene(std::string(SHADOWLAB_SOURCE_DIR) + "/data/scenes/" + name + ".json");
+        scene.camera.aspect = static_cast<double>(kWidth) / kHeight;
+        for (const DepthFormat& format : depth_formats()) {
+            const Inspection in = inspect_scene(
+                scene, {.method = "logpsm", .settings = depth_format_settings(format), .resolution = 2048});
+            ASSERT_EQ(in.setup.maps.at(0).projection, Projection::log_perspective) << name;
+            const Agreement a = gpu_against_cpu_lookup(in, kWidth, kHeight);
+            ASSERT_EQ(a.undrawn, 0u);
+            ASSERT_GT(a.compared, kWidth * kHeight / 4u);
+            EXPECT_GE(a.share(), 0.995) << name << ", " << describe(format) << ": " << a.compared - a.agreed << " of "
+                                        << a.compared << " pixels differ";
+            std::cout << "logpsm on " << name << ", " << describe(format) << ": GPU and CPU agree on " << a.agreed
+                      << " of " << a.compared << " pixels away from edges\n";
+        }
+    }
+}
+
 // Where the format's precision decides the verdicts: the floating box's ground casting on itself
 // under a map 1e5 units deep. unorm16 rounds the ground's depth by up to 0.75 units either way, and
 // where it rounds down past the bias the ground shadows itself in bands (acne) several pixels wide;
