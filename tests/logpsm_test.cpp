@@ -177,3 +177,28 @@ TEST(LogPsm, MaximumPerspectiveErrorIsBelowLispsmsAndTsmsOnTheOverheadView) {
     EXPECT_LT(m_max["logpsm"], m_max["lispsm"]);
     EXPECT_LT(m_max["logpsm"], m_max["tsm"]);
 }
+
+// The storage factor (metrics/storage_bound.hpp) on the same view at 2048²: the methods that fit one
+// map to the whole body B, held to one bound (the view's fewest texels for m = 1 over the receivers in
+// shadow, which each of them covers), so that a higher efficiency is fewer texels needed. Each is at
+// most 1 and LogPSM's is the highest (its max perspective m the lowest at equal texels, above).
+TEST(LogPsm, StorageEfficiencyIsTheHighestOfTheWholeBodyMethodsOnTheOverheadView) {
+    MeasureContext context = prepare_measurement(shipped("overhead_view"), 640, 360);
+    add_storage_bounds(context);
+    const double bound = context.storage_bounds->shadowed_receivers;
+    ASSERT_GT(bound, 0.0);
+    std::map<std::string, double> efficiency;
+    for (const std::string name : {"focused", "psm", "lispsm", "tsm", "xpsm", "logpsm"}) {
+        const Method& method = method_or_throw(name);
+        const Measurement m = measure(context, method, resolve_settings(name, method.settings, {}), 2048, -1.0);
+        ASSERT_TRUE(m.storage) << name;
+        EXPECT_LE(m.storage->efficiency, 1.0) << name;
+        efficiency[name] = bound / m.storage->needed;
+        EXPECT_LE(efficiency[name], 1.0) << name;
+        std::cout << name << ": needs " << m.storage->needed << " texels, efficiency " << efficiency[name] << "\n";
+    }
+    for (const auto& [name, e] : efficiency) {
+        if (name == "logpsm") continue;
+        EXPECT_GT(efficiency["logpsm"], e) << name;
+    }
+}
