@@ -54,9 +54,9 @@ std::vector<glm::dvec3> plane_section(const std::vector<Edge>& edges, const Plan
     if (corners.size() < 3) return {};
     glm::dvec3 centre(0.0);
     for (const glm::dvec3& c : corners) centre += c / static_cast<double>(corners.size());
-    const auto [x, y] = plane_axes(plane.normal);
+    const auto axes = plane_axes(plane.normal);  // not a structured binding: clang 14 cannot capture one
     const auto angle = [&](const glm::dvec3& p) {
-        return std::atan2(glm::dot(p - centre, y), glm::dot(p - centre, x));
+        return std::atan2(glm::dot(p - centre, axes.second), glm::dot(p - centre, axes.first));
     };
     std::sort(corners.begin(), corners.end(),
               [&](const glm::dvec3& p, const glm::dvec3& q) { return angle(p) < angle(q); });
